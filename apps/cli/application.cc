@@ -1,0 +1,199 @@
+#include "apps/cli/application.h"
+
+#include "apps/cli/commands.h"
+#include "apps/cli/input_error.h"
+#include "apps/cli/output_directory.h"
+#include "apps/cli/parameters.h"
+
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace compax::cli
+{
+  namespace
+  {
+    constexpr const char *version = "0.1.0";
+
+    /// What the words after the command name ask for.
+    struct Invocation
+    {
+      bool                                 help             = false;
+      bool                                 print_parameters = false;
+      std::optional<std::filesystem::path> parameter_file;
+      std::optional<std::filesystem::path> output;
+    };
+
+    void
+    print_usage(std::ostream                                &out,
+                const std::vector<std::unique_ptr<Command>> &commands)
+    {
+      out << "compax " << version
+          << " - multiscale simulation of pharmaceutical tablet die "
+             "compaction\n\n"
+             "Usage:\n"
+             "  compax <command> [file.prm] [-o OUTDIR]   run a study (no "
+             "file: its built-in default case)\n"
+             "  compax <command> --print-parameters       print the "
+             "documented defaults as a valid .prm\n"
+             "  compax <command> --help                   describe a "
+             "command\n"
+             "  compax --help | --version\n\n"
+             "Commands:\n";
+      for (const auto &command : commands)
+        out << "  " << command->name()
+            << std::string(12 - std::min<std::size_t>(
+                                  11, command->name().size()),
+                           ' ')
+            << command->summary() << '\n';
+      out << "\nExit codes: 0 success, 1 internal error, 2 bad input (no "
+             "output written),\n3 solver did not converge (last good state "
+             "kept in OUTDIR).\nAll quantities are in SI units.\n";
+    }
+
+    Invocation
+    parse_arguments(const std::string              &command,
+                    const std::vector<std::string> &words)
+    {
+      Invocation call;
+      for (std::size_t i = 0; i < words.size(); ++i)
+        {
+          const std::string &word = words[i];
+          if (word == "--help" || word == "-h")
+            call.help = true;
+          else if (word == "--print-parameters")
+            call.print_parameters = true;
+          else if (word == "-o" || word == "--output")
+            {
+              if (i + 1 == words.size())
+                throw InputError("option '" + word
+                                 + "' needs a folder name after it");
+              call.output = words[++i];
+            }
+          else if (!word.empty() && word[0] == '-')
+            throw InputError("unknown option '" + word + "' for 'compax "
+                             + command + "' (see 'compax " + command
+                             + " --help')");
+          else if (call.parameter_file)
+            throw InputError("only one parameter file may be given; got '"
+                             + call.parameter_file->string() + "' and '"
+                             + word + "'");
+          else
+            call.parameter_file = word;
+        }
+      return call;
+    }
+
+    int
+    run_command(const Command &command, const std::vector<std::string> &words)
+    {
+      const Invocation call = parse_arguments(command.name(), words);
+
+      dealii::ParameterHandler prm;
+      command.declare_parameters(prm);
+
+      if (call.help)
+        {
+          std::cout << "compax " << command.name() << " - "
+                    << command.summary() << "\n\n"
+                    << command.description()
+                    << "\n\nUsage: compax " << command.name()
+                    << " [file.prm] [-o OUTDIR] | --print-parameters | "
+                       "--help\nDefault OUTDIR: "
+                    << command.name()
+                    << "-output. Parameters (documented, with units): "
+                       "compax "
+                    << command.name() << " --print-parameters\n";
+          return success;
+        }
+      if (call.print_parameters)
+        {
+          prm.print_parameters(std::cout,
+                               dealii::ParameterHandler::PRM
+                                 | dealii::ParameterHandler::KeepDeclarationOrder);
+          return success;
+        }
+
+      if (call.parameter_file)
+        parse_parameter_file(prm, *call.parameter_file);
+      command.check_parameters(prm);
+
+      OutputDirectory output(call.output.value_or(command.name() + "-output"));
+      std::ofstream(output.staging() / "parameters.prm") << [&] {
+        std::ostringstream used;
+        prm.print_parameters(used,
+                             dealii::ParameterHandler::ShortPRM
+                               | dealii::ParameterHandler::KeepDeclarationOrder);
+        return used.str();
+      }();
+
+      const int code = command.run(prm, output.staging());
+      if (code == success)
+        {
+          output.publish();
+          std::cout << "Results in " << output.final().string() << '\n';
+        }
+      else if (code == not_converged)
+        {
+          output.publish_partial();
+          std::cerr << "compax " << command.name()
+                    << ": stopped without convergence; the last good state "
+                       "is in "
+                    << output.final().string() << '\n';
+        }
+      return code;
+    }
+  } // namespace
+
+  int
+  run_application(const int argc, char **argv)
+  {
+    const auto commands = all_commands();
+    std::vector<std::string> words(argv + 1, argv + argc);
+    std::string              context = "compax";
+    try
+      {
+        if (words.empty() || words[0] == "--help" || words[0] == "-h")
+          {
+            print_usage(std::cout, commands);
+            return words.empty() ? bad_input : success;
+          }
+        if (words[0] == "--version")
+          {
+            std::cout << "compax " << version << '\n';
+            return success;
+          }
+        for (const auto &command : commands)
+          if (command->name() == words[0])
+            {
+              context += " " + command->name();
+              return run_command(*command, {words.begin() + 1, words.end()});
+            }
+        throw InputError("unknown command '" + words[0]
+                         + "' (see 'compax --help')");
+      }
+    catch (const InputError &e)
+      {
+        std::cerr << context << ": error: " << e.what() << '\n';
+        return bad_input;
+      }
+    catch (const dealii::ExceptionBase &e)
+      {
+        std::ostringstream info;
+        e.print_info(info);
+        std::cerr << context << ": internal error: " << info.str() << '\n';
+        return failure;
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << context << ": internal error: " << e.what() << '\n';
+        return failure;
+      }
+  }
+} // namespace compax::cli

@@ -1,0 +1,14 @@
+#include "apps/cli/commands.h"
+
+#include "apps/contact/contact_command.h"
+
+namespace compax::cli
+{
+  std::vector<std::unique_ptr<Command>>
+  all_commands()
+  {
+    std::vector<std::unique_ptr<Command>> commands;
+    commands.push_back(make_contact_command());
+    return commands;
+  }
+} // namespace compax::cli

@@ -1,0 +1,88 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/patterns.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace compax::cli
+{
+  /**
+   * A real number in an interval whose ends may be open or closed, e.g.
+   * "(0, inf)" for a modulus or "(-1, 0.5)" for a Poisson's ratio. deal.II's
+   * Patterns::Double has closed ends only, and E = 0 or nu = 0.5 must be
+   * rejected at parse time with the allowed range in the message.
+   */
+  class RealInterval : public dealii::Patterns::PatternBase
+  {
+  public:
+    RealInterval(double lower, bool lower_open, double upper, bool upper_open);
+
+    bool
+    match(const std::string &text) const override;
+
+    std::string
+    description(OutputStyle style = Machine) const override;
+
+    std::unique_ptr<dealii::Patterns::PatternBase>
+    clone() const override;
+
+    /// The interval in mathematical notation, e.g. "(0, inf)".
+    std::string
+    interval() const;
+
+  private:
+    double lower, upper;
+    bool   lower_open, upper_open;
+  };
+
+  /// (0, inf)
+  RealInterval
+  positive();
+  /// [0, inf)
+  RealInterval
+  non_negative();
+  /// [lower, upper]
+  RealInterval
+  closed(double lower, double upper);
+  /// (lower, upper)
+  RealInterval
+  open(double lower, double upper);
+
+  /**
+   * Declares an entry whose documentation names its unit, e.g.
+   * declare_quantity(prm, "Young's modulus", "5e9", positive(), "Pa",
+   * "Young's modulus E of the particle material.").
+   */
+  void
+  declare_quantity(dealii::ParameterHandler             &prm,
+                   const std::string                    &name,
+                   const std::string                    &default_value,
+                   const dealii::Patterns::PatternBase &pattern,
+                   const std::string                    &unit,
+                   const std::string                    &documentation);
+
+  /**
+   * Parses a .prm file into prm. A missing file, an unknown entry, a
+   * malformed or out-of-range value all become one InputError whose message
+   * names the file, line, entry, value and allowed range.
+   */
+  void
+  parse_parameter_file(dealii::ParameterHandler    &prm,
+                       const std::filesystem::path &file);
+
+  /// A comma-separated list of reals read from an entry declared with
+  /// Patterns::List(Patterns::Double()).
+  std::vector<double>
+  get_real_list(dealii::ParameterHandler &prm, const std::string &name);
+
+  /// Throws an InputError "entry 'name' = value: message" for checks that
+  /// involve several entries.
+  [[noreturn]] void
+  reject_entry(const std::string &name,
+               const std::string &value,
+               const std::string &message);
+} // namespace compax::cli

@@ -1,0 +1,69 @@
+#include "apps/common/csv_writer.h"
+
+#include <iomanip>
+#include <stdexcept>
+
+namespace compax::cli
+{
+  CsvWriter::CsvWriter(const std::filesystem::path &file,
+                       std::vector<std::string>     columns)
+    : out(file)
+    , header(std::move(columns))
+  {
+    if (!out)
+      throw std::runtime_error("cannot write '" + file.string() + "'");
+    out << std::setprecision(12);
+    for (std::size_t i = 0; i < header.size(); ++i)
+      out << (i ? "," : "") << header[i];
+    out << '\n';
+  }
+
+  void
+  CsvWriter::separate()
+  {
+    if (cells++ > 0)
+      out << ',';
+  }
+
+  CsvWriter &
+  CsvWriter::operator<<(const double value)
+  {
+    separate();
+    out << value;
+    return *this;
+  }
+
+  CsvWriter &
+  CsvWriter::operator<<(const long long value)
+  {
+    separate();
+    out << value;
+    return *this;
+  }
+
+  CsvWriter &
+  CsvWriter::operator<<(const std::string &text)
+  {
+    separate();
+    out << text;
+    return *this;
+  }
+
+  CsvWriter &
+  CsvWriter::empty()
+  {
+    separate();
+    return *this;
+  }
+
+  void
+  CsvWriter::end_row()
+  {
+    if (cells != header.size())
+      throw std::logic_error("CSV row with " + std::to_string(cells)
+                             + " cells for " + std::to_string(header.size())
+                             + " columns");
+    out << '\n';
+    cells = 0;
+  }
+} // namespace compax::cli

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace compax::cli
+{
+  /**
+   * A CSV table with a fixed header. Numbers are written with 12
+   * significant digits, enough for plots and for tests that re-derive
+   * physics from the file; text cells are written as they are.
+   */
+  class CsvWriter
+  {
+  public:
+    CsvWriter(const std::filesystem::path &file,
+              std::vector<std::string>     columns);
+
+    /// Appends one cell of the current row.
+    CsvWriter &
+    operator<<(double value);
+    CsvWriter &
+    operator<<(long long value);
+    CsvWriter &
+    operator<<(int value)
+    {
+      return *this << static_cast<long long>(value);
+    }
+    CsvWriter &
+    operator<<(const std::string &text);
+
+    /// An empty cell (a quantity that does not apply).
+    CsvWriter &
+    empty();
+
+    /// Ends the current row; throws if it does not have one cell per column.
+    void
+    end_row();
+
+  private:
+    void
+    separate();
+
+    std::ofstream            out;
+    std::vector<std::string> header;
+    std::size_t              cells = 0;
+  };
+} // namespace compax::cli

@@ -1,0 +1,7 @@
+#include "apps/cli/application.h"
+
+int
+main(int argc, char **argv)
+{
+  return compax::cli::run_application(argc, argv);
+}

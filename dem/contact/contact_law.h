@@ -1,0 +1,56 @@
+#pragma once
+
+#include "dem/contact/contact_response.h"
+
+#include <string>
+
+namespace compax::dem
+{
+  /**
+   * Interface of a normal contact law between two bodies whose pair
+   * properties (radii, materials) were fixed at construction.
+   *
+   * Two operations, kept apart on purpose: evaluate() is a pure function of
+   * the overlap and the current history (trial states of a Newton iteration
+   * call it freely), and updated_history() returns the internal variables
+   * of a converged state (Gonzalez 2018, Eq. 13), which the caller stores.
+   *
+   * The concrete laws are final classes with inline-able members, so the
+   * particle solver may also call them without the virtual dispatch.
+   */
+  class ContactLaw
+  {
+  public:
+    virtual ~ContactLaw() = default;
+
+    /// Force, exact stiffness dP/dgamma and contact radius at overlap
+    /// gamma [m] for the given history and context.
+    virtual ContactResponse
+    evaluate(double                gamma,
+             const ContactHistory &history,
+             const ContactContext &context) const = 0;
+
+    /// Internal variables after a converged step that ends at overlap gamma.
+    virtual ContactHistory
+    updated_history(double                gamma,
+                    const ContactHistory &history,
+                    const ContactContext &context) const = 0;
+
+    /// Short name used in parameter files and output ("hertz", ...).
+    virtual std::string
+    name() const = 0;
+
+    /// Convenience overloads for laws that need no context.
+    ContactResponse
+    evaluate(double gamma, const ContactHistory &history) const
+    {
+      return evaluate(gamma, history, ContactContext{});
+    }
+
+    ContactHistory
+    updated_history(double gamma, const ContactHistory &history) const
+    {
+      return updated_history(gamma, history, ContactContext{});
+    }
+  };
+} // namespace compax::dem

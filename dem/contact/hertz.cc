@@ -1,0 +1,52 @@
+#include "dem/contact/hertz.h"
+
+#include "dem/contact/pair_properties.h"
+
+#include <cmath>
+
+namespace compax::dem
+{
+  HertzLaw::HertzLaw(const double effective_radius,
+                     const double effective_modulus)
+    : R(effective_radius)
+    , E(effective_modulus)
+    , n_H(4.0 / 3.0 * effective_modulus * std::sqrt(effective_radius))
+  {}
+
+  HertzLaw
+  HertzLaw::for_pair(const double R1,
+                     const double E1,
+                     const double nu1,
+                     const double R2,
+                     const double E2,
+                     const double nu2)
+  {
+    return HertzLaw(dem::effective_radius(R1, R2),
+                    dem::effective_modulus(E1, nu1, E2, nu2));
+  }
+
+  ContactResponse
+  HertzLaw::response(const double gamma) const
+  {
+    if (gamma <= 0.0)
+      return {};
+    const double root = std::sqrt(gamma);
+    return {n_H * gamma * root, 1.5 * n_H * root, std::sqrt(R * gamma)};
+  }
+
+  ContactResponse
+  HertzLaw::evaluate(const double gamma,
+                     const ContactHistory &,
+                     const ContactContext &) const
+  {
+    return response(gamma);
+  }
+
+  ContactHistory
+  HertzLaw::updated_history(const double,
+                            const ContactHistory &history,
+                            const ContactContext &) const
+  {
+    return history;
+  }
+} // namespace compax::dem

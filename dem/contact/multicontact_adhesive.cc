@@ -1,0 +1,158 @@
+#include "dem/contact/multicontact_adhesive.h"
+
+#include "dem/contact/pair_properties.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace compax::dem
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+  }
+
+  MulticontactAdhesiveLaw::MulticontactAdhesiveLaw(
+    const double      effective_radius,
+    const double      effective_modulus,
+    const Parameters &parameters)
+      : R(effective_radius)
+      , E(effective_modulus)
+      , p(parameters)
+      , k1(4.0 / 3.0 * effective_modulus * std::sqrt(effective_radius))
+      , k2(parameters.unloading_stiffness_ratio * k1)
+      , kc(parameters.adhesion_stiffness_ratio * k1)
+      , multicontact_factor(parameters.multicontact_prefactor
+                            * parameters.poisson_ratio * pi * effective_radius)
+  {
+    if (!(parameters.unloading_stiffness_ratio >= 1.0))
+      throw std::invalid_argument(
+        "multicontact-adhesive: k2/k1 must be at least 1");
+    if (!(parameters.adhesion_stiffness_ratio >= 0.0))
+      throw std::invalid_argument(
+        "multicontact-adhesive: kc/k1 must not be negative");
+    if (!(parameters.plasticity_depth >= 0.0))
+      throw std::invalid_argument(
+        "multicontact-adhesive: phi_f must not be negative");
+  }
+
+  MulticontactAdhesiveLaw
+  MulticontactAdhesiveLaw::for_pair(const double      R1,
+                                    const double      E1,
+                                    const double      nu1,
+                                    const double      R2,
+                                    const double      E2,
+                                    const double      nu2,
+                                    const Parameters &parameters)
+  {
+    return MulticontactAdhesiveLaw(dem::effective_radius(R1, R2),
+                                   dem::effective_modulus(E1, nu1, E2, nu2),
+                                   parameters);
+  }
+
+  double
+  MulticontactAdhesiveLaw::plastic_flow_limit() const
+  {
+    if (k2 == k1)
+      return std::numeric_limits<double>::infinity();
+    return k2 / (k2 - k1) * p.plasticity_depth * 2.0 * R;
+  }
+
+  double
+  MulticontactAdhesiveLaw::unloading_stiffness(const double delta_max) const
+  {
+    if (k2 == k1)
+      return k1;
+    const double limit = plastic_flow_limit();
+    if (delta_max >= limit)
+      return k2;
+    return k1 + (k2 - k1) * delta_max / limit;
+  }
+
+  double
+  MulticontactAdhesiveLaw::plastic_overlap(const double delta_max) const
+  {
+    if (delta_max <= 0.0)
+      return 0.0;
+    const double k2s = unloading_stiffness(delta_max);
+    return std::cbrt(std::pow(1.0 - k1 / k2s, 2.0)) * delta_max;
+  }
+
+  double
+  MulticontactAdhesiveLaw::minimum_overlap(const double delta_max) const
+  {
+    if (delta_max <= 0.0)
+      return 0.0;
+    const double k2s = unloading_stiffness(delta_max);
+    const double q   = (k2s - k1) / (k2s + kc);
+    return std::cbrt(q * q) * delta_max;
+  }
+
+  double
+  MulticontactAdhesiveLaw::minimum_force(const double delta_max) const
+  {
+    const double d = minimum_overlap(delta_max);
+    return -kc * d * std::sqrt(d);
+  }
+
+  ContactResponse
+  MulticontactAdhesiveLaw::response(const double delta,
+                                    const double delta_max,
+                                    const double particle_pressure) const
+  {
+    if (delta <= 0.0)
+      return {};
+    const double root = std::sqrt(delta);
+    const double x    = delta * root;
+    const double dx   = 1.5 * root;
+
+    ContactResponse r;
+    if (delta >= delta_max)
+      {
+        r.force     = k1 * x;
+        r.stiffness = k1 * dx;
+      }
+    else
+      {
+        const double k2s    = unloading_stiffness(delta_max);
+        const double x_max  = delta_max * std::sqrt(delta_max);
+        const double x0     = (1.0 - k1 / k2s) * x_max;
+        const double branch = k2s * (x - x0);
+        if (branch > -kc * x)
+          {
+            r.force     = branch;
+            r.stiffness = k2s * dx;
+          }
+        else
+          {
+            r.force     = -kc * x;
+            r.stiffness = -kc * dx;
+          }
+      }
+    const double pressure = -particle_pressure;
+    r.force += p.pull_off_force + multicontact_factor * delta * pressure;
+    r.stiffness += multicontact_factor * pressure;
+    r.contact_radius = std::sqrt(R * delta);
+    return r;
+  }
+
+  ContactResponse
+  MulticontactAdhesiveLaw::evaluate(const double          gamma,
+                                    const ContactHistory &history,
+                                    const ContactContext &context) const
+  {
+    return response(gamma, history.delta_max, context.particle_pressure);
+  }
+
+  ContactHistory
+  MulticontactAdhesiveLaw::updated_history(const double          gamma,
+                                           const ContactHistory &history,
+                                           const ContactContext &) const
+  {
+    ContactHistory next = history;
+    next.delta_max      = std::max(history.delta_max, gamma);
+    return next;
+  }
+} // namespace compax::dem

@@ -1,0 +1,371 @@
+#include "dem/die/die_compaction.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace compax::dem
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+
+    double
+    now()
+    {
+      return std::chrono::duration<double>(
+               std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+    }
+
+    /// Punch gap at which the bed reaches in-die relative density rho.
+    double
+    gap_for(const Bed &bed, const double rho)
+    {
+      return bed.particles.solid_volume() / (bed.walls.punch_area() * rho);
+    }
+
+    /// Relative density of the tablet out of the die: solid volume over the
+    /// cylinder that encloses the spheres.
+    double
+    tablet_density(const Bed &bed)
+    {
+      const auto &p = bed.particles;
+      double      r = 0.0, z_lo = 1e300, z_hi = -1e300;
+      for (std::size_t i = 0; i < p.size(); ++i)
+        {
+          const auto &x = p.positions[i];
+          r    = std::max(r, std::hypot(x[0], x[1]) + p.radii[i]);
+          z_lo = std::min(z_lo, x[2] - p.radii[i]);
+          z_hi = std::max(z_hi, x[2] + p.radii[i]);
+        }
+      return p.solid_volume() / (pi * r * r * (z_hi - z_lo));
+    }
+  } // namespace
+
+  DieCompaction::DieCompaction(Bed                 bed,
+                               const ContactModel &model,
+                               DieProtocol         protocol_,
+                               EquilibriumOptions  equilibrium)
+    : path(std::move(bed))
+    , model(model)
+    , protocol(std::move(protocol_))
+    , stepper(model, equilibrium)
+  {
+    auto &t = protocol.compaction_targets;
+    t.insert(t.end(),
+             protocol.unloading_points.begin(),
+             protocol.unloading_points.end());
+    std::sort(t.begin(), t.end());
+    t.erase(std::unique(t.begin(),
+                        t.end(),
+                        [](double a, double b) {
+                          return std::abs(a - b) < 1e-12;
+                        }),
+            t.end());
+    std::sort(protocol.unloading_points.begin(),
+              protocol.unloading_points.end());
+  }
+
+  void
+  DieCompaction::set_output(std::ostream *csv_, std::ostream *progress_)
+  {
+    csv      = csv_;
+    progress = progress_;
+  }
+
+  void
+  DieCompaction::check(const LoadStepResult &r, const std::string &what) const
+  {
+    if (!r.converged)
+      {
+        std::ostringstream s;
+        s << "die protocol: equilibrium failed during " << what
+          << " (relative residual " << r.last.relative_residual << " after "
+          << r.cutbacks << " cut-backs)";
+        throw std::runtime_error(s.str());
+      }
+  }
+
+  DieRecord
+  DieCompaction::record(const Bed            &bed,
+                        const std::string    &stage,
+                        const int             branch,
+                        const int             step,
+                        const LoadStepResult &r)
+  {
+    assembly_seconds += r.assembly_seconds;
+    linear_seconds += r.linear_seconds;
+    assemblies += r.assemblies;
+    newton_iterations += r.iterations;
+    cg_iterations += r.cg_iterations;
+
+    DieRecord d;
+    d.stage             = stage;
+    d.branch            = branch;
+    d.step              = step;
+    d.punch_gap         = bed.walls.height();
+    d.relative_density  = bed.relative_density();
+    const auto &s       = r.last.sums;
+    d.upper_punch_force = s.wall_force[int(Wall::upper_punch)];
+    d.lower_punch_force = s.wall_force[int(Wall::lower_punch)];
+    d.die_wall_force    = s.wall_force[int(Wall::die)];
+    d.upper_punch_pressure = d.upper_punch_force / bed.walls.punch_area();
+    d.lower_punch_pressure = d.lower_punch_force / bed.walls.punch_area();
+    d.die_wall_pressure =
+      bed.walls.die_present ? d.die_wall_force / bed.walls.wall_area() : 0.0;
+    const BedMeasures m   = measure(bed);
+    d.coordination_number = m.coordination_number;
+    d.bonding_surface     = m.bonding_surface;
+    d.bonds               = m.n_bonds;
+    d.bonds_formed        = r.bonds.formed;
+    d.bonds_broken        = r.bonds.broken;
+    d.residual            = r.last.relative_residual;
+    d.iterations          = r.iterations;
+    d.cg_iterations       = r.cg_iterations;
+    d.cutbacks            = r.cutbacks;
+    d.wall_seconds        = now() - start_time;
+    return d;
+  }
+
+  void
+  DieCompaction::emit(const DieRecord &r)
+  {
+    rows.push_back(r);
+    if (csv)
+      {
+        write_csv_row(*csv, r);
+        csv->flush();
+      }
+  }
+
+  void
+  DieCompaction::run()
+  {
+    start_time = now();
+    if (csv)
+      write_csv_header(*csv);
+    // The filled bed is force-free up to round-off (touching spheres, no
+    // gravity): record it as is.
+    LoadStepResult initial;
+    initial.converged = true;
+    {
+      ContactAssembler a;
+      Eigen::VectorXd  F;
+      initial.last.sums = a.residual(path, model, F);
+    }
+    DieRecord r0 = record(path, "compaction", 0, 0, initial);
+    r0.rho_max_in_die = r0.relative_density;
+    emit(r0);
+
+    const auto &targets = protocol.compaction_targets;
+    int         branch  = 0;
+    for (std::size_t k = 0; k < targets.size(); ++k)
+      {
+        if (targets[k] <= path.relative_density() * (1 + 1e-12))
+          continue;
+        compact_to(targets[k], static_cast<int>(k + 1),
+                   static_cast<int>(targets.size()));
+        for (const double u : protocol.unloading_points)
+          if (std::abs(u - targets[k]) < 1e-12)
+            unloading_branch(++branch);
+      }
+  }
+
+  void
+  DieCompaction::compact_to(const double rho, const int step, const int n_steps)
+  {
+    DieWalls target    = path.walls;
+    target.upper_punch = path.walls.lower_punch + gap_for(path, rho);
+    const double t0    = now();
+    const LoadStepResult r = stepper.advance(path, target);
+    std::ostringstream what;
+    what << "compaction to relative density " << rho;
+    check(r, what.str());
+    DieRecord d      = record(path, "compaction", 0, step, r);
+    d.rho_max_in_die = d.relative_density;
+    emit(d);
+    if (progress)
+      {
+        const double elapsed = now() - start_time;
+        const double left    = elapsed / step * (n_steps - step);
+        *progress << "compaction " << std::setw(3) << step << "/" << n_steps
+                  << "  rho " << std::fixed << std::setprecision(4)
+                  << d.relative_density << "  punch " << std::setprecision(2)
+                  << d.upper_punch_pressure / 1e6 << " MPa  Z "
+                  << d.coordination_number << "  it " << r.iterations
+                  << " (cg " << r.cg_iterations << ", cut " << r.cutbacks
+                  << ")  " << std::setprecision(1) << now() - t0
+                  << " s  left ~" << left << " s" << std::defaultfloat
+                  << std::endl;
+      }
+  }
+
+  void
+  DieCompaction::unloading_branch(const int branch)
+  {
+    Bed           bed = path; // the saved state of the compaction path
+    BranchSummary s;
+    s.branch         = branch;
+    s.rho_max_in_die = bed.relative_density();
+    const double H_max = bed.walls.height();
+    s.max_punch_pressure = rows.back().upper_punch_pressure;
+    s.coordination_compacted  = rows.back().coordination_number;
+    s.bonding_surface_compacted = rows.back().bonding_surface;
+
+    std::vector<double> strain{0.0}, axial{rows.back().upper_punch_pressure},
+      radial{rows.back().die_wall_pressure};
+    double F_prev = rows.back().upper_punch_force, H_prev = H_max;
+    double H_min  = H_max;
+    DieRecord last;
+    for (int step = 1;; ++step)
+      {
+        DieWalls w = bed.walls;
+        w.upper_punch += protocol.unloading_step * H_max;
+        const LoadStepResult r = stepper.advance(bed, w);
+        check(r, "unloading");
+        DieRecord d      = record(bed, "unloading", branch, step, r);
+        d.rho_max_in_die = s.rho_max_in_die;
+        const double H   = bed.walls.height();
+        strain.push_back((H - H_max) / H_max);
+        axial.push_back(d.upper_punch_pressure);
+        radial.push_back(d.die_wall_pressure);
+        if (d.upper_punch_force <= 0.0 || step > 10000)
+          {
+            // The punch separated within this step: interpolate the gap
+            // at which its force vanished.
+            const double F = d.upper_punch_force;
+            H_min = F_prev > F ? H_prev + (H - H_prev) * F_prev / (F_prev - F) :
+                                 H;
+            s.rho_min_in_die = bed.particles.solid_volume()
+                               / (bed.walls.punch_area() * H_min);
+            s.elastic_recovery_rho =
+              (s.rho_max_in_die - s.rho_min_in_die) / s.rho_max_in_die;
+            s.elastic_recovery_H = (H_min - H_max) / H_max;
+            s.residual_radial_pressure =
+              d.die_wall_force / (pi * bed.walls.diameter * H_min);
+            s.bonding_surface_unloaded = d.bonding_surface;
+            d.rho_min_in_die           = s.rho_min_in_die;
+            d.elastic_recovery_rho     = s.elastic_recovery_rho;
+            d.elastic_recovery_H       = s.elastic_recovery_H;
+            d.residual_radial_pressure = s.residual_radial_pressure;
+            emit(d);
+            last = d;
+            break;
+          }
+        emit(d);
+        if (progress && std::getenv("COMPAX_DIE_VERBOSE"))
+          *progress << "  unloading step " << step << " F " << d.upper_punch_force
+                    << " it " << r.iterations << " cg " << r.cg_iterations
+                    << " fire " << r.last.fire_iterations << std::endl;
+        F_prev = d.upper_punch_force;
+        H_prev = H;
+      }
+    s.tablet = unloading_elasticity(strain, axial, radial);
+    if (progress)
+      *progress << std::setprecision(4) << "unloading branch " << branch << ": rho_max "
+                << s.rho_max_in_die << "  rho_min " << s.rho_min_in_die
+                << "  recovery " << 100 * s.elastic_recovery_rho
+                << " %  residual radial " << s.residual_radial_pressure / 1e6
+                << " MPa" << std::endl;
+    if (protocol.eject)
+      eject(bed, branch, s);
+    summaries.push_back(s);
+  }
+
+  void
+  DieCompaction::eject(Bed &bed, const int branch, BranchSummary &s)
+  {
+    // The upper punch is lifted clear; the die wall then opens in steps.
+    // Ejection pressure (Sec. 5.4): mu times the radial wall force over
+    // the punch area, largest at the start of ejection.
+    const double area  = bed.walls.punch_area();
+    const double F_die = rows.back().die_wall_force;
+    s.ejection_pressure = protocol.friction_coefficient * F_die / area;
+    const double D0     = bed.walls.diameter;
+    DieWalls     w      = bed.walls;
+    w.upper_punch += 0.2 * bed.walls.height();
+    for (int step = 1; step <= protocol.max_ejection_steps + 1; ++step)
+      {
+        const bool remove = step > protocol.max_ejection_steps;
+        if (remove)
+          w.die_present = false;
+        else
+          w.diameter = D0 * (1.0 + protocol.ejection_step * step);
+        const LoadStepResult r = stepper.advance(bed, w);
+        check(r, "ejection");
+        DieRecord d                = record(bed, "ejection", branch, step, r);
+        d.rho_max_in_die           = s.rho_max_in_die;
+        d.rho_min_in_die           = s.rho_min_in_die;
+        d.elastic_recovery_rho     = s.elastic_recovery_rho;
+        d.elastic_recovery_H       = s.elastic_recovery_H;
+        d.residual_radial_pressure = s.residual_radial_pressure;
+        d.ejection_pressure =
+          protocol.friction_coefficient * d.die_wall_force / area;
+        d.rho_tablet = tablet_density(bed);
+        emit(d);
+        if (progress && std::getenv("COMPAX_DIE_VERBOSE"))
+          *progress << "  ejection step " << step << " F_die " << d.die_wall_force
+                    << " it " << r.iterations << " cg " << r.cg_iterations
+                    << " fire " << r.last.fire_iterations << std::endl;
+        if (d.die_wall_force == 0.0 && !remove)
+          {
+            // The tablet left the wall: remove it.
+            w.die_present = false;
+            const LoadStepResult rf = stepper.advance(bed, w);
+            check(rf, "ejection");
+            DieRecord f  = record(bed, "ejection", branch, step + 1, rf);
+            f.rho_max_in_die = s.rho_max_in_die;
+            f.rho_min_in_die = s.rho_min_in_die;
+            f.rho_tablet     = tablet_density(bed);
+            emit(f);
+            break;
+          }
+        if (remove)
+          break;
+      }
+    s.rho_tablet              = rows.back().rho_tablet;
+    s.bonding_surface_ejected = rows.back().bonding_surface;
+    if (progress)
+      *progress << std::setprecision(4) << "ejection branch " << branch << ": ejection pressure "
+                << s.ejection_pressure / 1e6 << " MPa (mu "
+                << protocol.friction_coefficient << ")  rho_tablet "
+                << s.rho_tablet << std::endl;
+  }
+
+  void
+  DieCompaction::write_csv_header(std::ostream &out)
+  {
+    out << "stage,branch,step,punch_gap,relative_density,rho_max_in_die,"
+           "rho_min_in_die,rho_tablet,upper_punch_force,lower_punch_force,"
+           "die_wall_force,upper_punch_pressure,lower_punch_pressure,"
+           "die_wall_pressure,coordination_number,bonding_surface,bonds,"
+           "bonds_formed,bonds_broken,elastic_recovery_rho,"
+           "elastic_recovery_H,residual_radial_pressure,ejection_pressure,"
+           "residual,iterations,cg_iterations,cutbacks,wall_seconds\n";
+  }
+
+  void
+  DieCompaction::write_csv_row(std::ostream &out, const DieRecord &r)
+  {
+    const auto old = out.precision(10);
+    out << r.stage << ',' << r.branch << ',' << r.step << ',' << r.punch_gap
+        << ',' << r.relative_density << ',' << r.rho_max_in_die << ','
+        << r.rho_min_in_die << ',' << r.rho_tablet << ','
+        << r.upper_punch_force << ',' << r.lower_punch_force << ','
+        << r.die_wall_force << ',' << r.upper_punch_pressure << ','
+        << r.lower_punch_pressure << ',' << r.die_wall_pressure << ','
+        << r.coordination_number << ',' << r.bonding_surface << ','
+        << r.bonds << ',' << r.bonds_formed << ',' << r.bonds_broken << ','
+        << r.elastic_recovery_rho << ',' << r.elastic_recovery_H << ','
+        << r.residual_radial_pressure << ',' << r.ejection_pressure << ','
+        << r.residual << ',' << r.iterations << ',' << r.cg_iterations << ','
+        << r.cutbacks << ',' << r.wall_seconds << '\n';
+    out.precision(old);
+  }
+} // namespace compax::dem

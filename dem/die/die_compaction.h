@@ -1,0 +1,171 @@
+#pragma once
+
+#include "dem/die/die_analysis.h"
+#include "dem/solver/load_stepper.h"
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace compax::dem
+{
+  /// Parameters of the die protocol of Gonzalez 2018, Sec. 5.
+  struct DieProtocol
+  {
+    /// In-die relative densities the compaction passes through, in
+    /// increasing order (one load step each) [-].
+    std::vector<double> compaction_targets;
+    /// rho_max^in-die at which an unloading branch starts [-]; each is
+    /// added to the compaction targets.
+    std::vector<double> unloading_points;
+    /// Upper-punch withdrawal per unloading step as a fraction of the
+    /// punch gap at the unloading point [-].
+    double unloading_step = 2e-3;
+    /// Die-wall friction coefficient mu of the ejection pressure [-].
+    double friction_coefficient = 1.0;
+    /// Die-radius increase per ejection step as a fraction of D/2 [-].
+    double ejection_step = 2e-4;
+    /// Ejection steps before the die wall is removed altogether.
+    int max_ejection_steps = 40;
+    /// Whether to eject after each unloading branch.
+    bool eject = true;
+  };
+
+  /// One row of die.csv: the state after a converged load step.
+  struct DieRecord
+  {
+    std::string stage; // compaction, unloading, ejection
+    int         branch = 0;
+    int         step   = 0;
+    double      punch_gap          = 0.0;
+    double      relative_density   = 0.0;
+    double      rho_max_in_die     = 0.0;
+    double      rho_min_in_die     = 0.0;
+    double      rho_tablet         = 0.0;
+    double      upper_punch_force  = 0.0;
+    double      lower_punch_force  = 0.0;
+    double      die_wall_force     = 0.0;
+    double      upper_punch_pressure = 0.0;
+    double      lower_punch_pressure = 0.0;
+    double      die_wall_pressure    = 0.0;
+    double      coordination_number  = 0.0;
+    double      bonding_surface      = 0.0;
+    std::size_t bonds                = 0;
+    std::size_t bonds_formed         = 0;
+    std::size_t bonds_broken         = 0;
+    double      elastic_recovery_rho = 0.0;
+    double      elastic_recovery_H   = 0.0;
+    double      residual_radial_pressure = 0.0;
+    double      ejection_pressure        = 0.0;
+    double      residual                 = 0.0;
+    int         iterations               = 0;
+    int         cg_iterations            = 0;
+    int         cutbacks                 = 0;
+    double      wall_seconds             = 0.0;
+  };
+
+  /// The outcome of one unloading branch (and its ejection).
+  struct BranchSummary
+  {
+    int              branch = 0;
+    double           rho_max_in_die = 0.0, rho_min_in_die = 0.0, rho_tablet = 0.0;
+    double           max_punch_pressure       = 0.0;
+    double           elastic_recovery_rho     = 0.0;
+    double           elastic_recovery_H       = 0.0;
+    double           residual_radial_pressure = 0.0;
+    double           ejection_pressure        = 0.0;
+    double           bonding_surface_compacted = 0.0;
+    double           bonding_surface_unloaded  = 0.0;
+    double           bonding_surface_ejected   = 0.0;
+    double           coordination_compacted    = 0.0;
+    TabletElasticity tablet;
+  };
+
+  /**
+   * Die compaction, unloading and ejection of a bed (Gonzalez 2018,
+   * Sec. 5, Fig. 2): the upper punch moves down through the target
+   * densities; at every unloading point the state is saved and an
+   * unloading branch runs on a copy: the upper punch withdraws until it
+   * carries no force (C in Fig. 2), then the die wall is removed in steps
+   * (D). Each converged step is one row of die.csv.
+   */
+  class DieCompaction
+  {
+  public:
+    DieCompaction(Bed                 bed,
+                  const ContactModel &model,
+                  DieProtocol         protocol,
+                  EquilibriumOptions  equilibrium = {});
+
+    /// Where rows go as they are computed (CSV with header); progress
+    /// lines go to `progress` (may be null).
+    void
+    set_output(std::ostream *csv, std::ostream *progress);
+
+    /// Runs the whole protocol; throws if a load step cannot converge.
+    void
+    run();
+
+    const std::vector<DieRecord> &
+    records() const
+    {
+      return rows;
+    }
+
+    const std::vector<BranchSummary> &
+    branches() const
+    {
+      return summaries;
+    }
+
+    /// The bed on the compaction path.
+    const Bed &
+    bed() const
+    {
+      return path;
+    }
+
+    /// Header and one row of die.csv.
+    static void
+    write_csv_header(std::ostream &out);
+    static void
+    write_csv_row(std::ostream &out, const DieRecord &r);
+
+    /// Totals for performance reports.
+    double assembly_seconds = 0.0, linear_seconds = 0.0;
+    long   assemblies = 0, newton_iterations = 0, cg_iterations = 0;
+
+  private:
+    void
+    compact_to(double rho, int step, int n_steps);
+
+    void
+    unloading_branch(int branch);
+
+    void
+    eject(Bed &bed, int branch, BranchSummary &summary);
+
+    DieRecord
+    record(const Bed            &bed,
+           const std::string    &stage,
+           int                   branch,
+           int                   step,
+           const LoadStepResult &r);
+
+    void
+    emit(const DieRecord &r);
+
+    void
+    check(const LoadStepResult &r, const std::string &what) const;
+
+    Bed                        path;
+    const ContactModel        &model;
+    DieProtocol                protocol;
+    LoadStepper                stepper;
+    std::vector<DieRecord>     rows;
+    std::vector<BranchSummary> summaries;
+    std::ostream              *csv      = nullptr;
+    std::ostream              *progress = nullptr;
+    double                     start_time = 0.0;
+  };
+} // namespace compax::dem

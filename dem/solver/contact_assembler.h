@@ -1,0 +1,68 @@
+#pragma once
+
+#include "dem/solver/bed.h"
+#include "dem/solver/block_sparse_matrix.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace compax::dem
+{
+  /// Force sums gathered while assembling.
+  struct ContactSums
+  {
+    /// Sum of the normal forces P on each wall [N] (positive compressive):
+    /// index Wall::lower_punch, upper_punch, die.
+    double wall_force[n_walls] = {0.0, 0.0, 0.0};
+    /// Mean |P| over contacts carrying a non-zero force [N].
+    double mean_force = 0.0;
+    /// Number of contacts (pairs and walls) with non-zero force.
+    std::size_t n_loaded = 0;
+  };
+
+  /**
+   * Residual and stiffness of the static equilibrium of Gonzalez 2018,
+   * Eq. (12), at fixed walls and fixed internal variables.
+   *
+   * The residual is the out-of-balance internal force
+   * F_i = - sum_j P_ij n_ij (n_ij = (x_i - x_j)/|x_i - x_j|), the gradient
+   * of the bed's stored energy, so that equilibrium is F = 0 and
+   * K = dF/dx is symmetric. A pair contributes the block
+   * k = P' n n^T - P/d (I - n n^T) to (i,i) and (j,j) and -k to (i,j) and
+   * (j,i): the normal term from the law's exact dP/dgamma and the
+   * geometric term from the turning normal. A punch contributes P' n n^T;
+   * the die wall also P/r (I - e_r e_r^T) restricted to the horizontal
+   * plane, because its normal turns with the particle.
+   */
+  class ContactAssembler
+  {
+  public:
+    /// F only (refreshes the contact list if needed).
+    ContactSums
+    residual(Bed &bed, const ContactModel &model, Eigen::VectorXd &F);
+
+    /// F and K; the pattern of K is rebuilt only when the contact list
+    /// changed.
+    ContactSums
+    assemble(Bed                &bed,
+             const ContactModel &model,
+             Eigen::VectorXd    &F,
+             BlockSparseMatrix  &K);
+
+  private:
+    template <bool with_stiffness>
+    ContactSums
+    evaluate(const Bed &bed, Eigen::VectorXd &F, BlockSparseMatrix *K);
+
+    void
+    refresh_pattern(const Bed &bed, BlockSparseMatrix &K);
+
+    std::uint64_t              pattern_revision = ~std::uint64_t(0);
+    std::size_t                pattern_size     = 0;
+    const BlockSparseMatrix   *pattern_matrix   = nullptr;
+    std::vector<std::uint32_t> pair_slots; // (ij, ji) per pair contact
+    std::vector<ParticlePair>  scratch_pairs;
+  };
+} // namespace compax::dem

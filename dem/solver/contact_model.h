@@ -1,0 +1,73 @@
+#pragma once
+
+#include "dem/contact/bonded_elastoplastic.h"
+#include "dem/contact/elastoplastic_material.h"
+
+#include <vector>
+
+namespace compax::dem
+{
+  /**
+   * Which law acts between two particles, or a particle and a rigid wall,
+   * of a bed made of several materials: the bonded elasto-plastic law of
+   * Gonzalez 2018 (Eq. 4) with a fracture toughness K_Ic per pair of
+   * materials. Solid bridges with the walls are off unless asked for.
+   */
+  class ContactModel
+  {
+  public:
+    /// One material: K_Ic for contacts with itself, xi_B = 0.01.
+    explicit ContactModel(const ElastoplasticMaterial &material,
+                          double                       fracture_toughness,
+                          double                       regularization = 0.01);
+
+    /// Several materials; toughness[a][b] = K_Ic between materials a and b
+    /// (symmetric) [Pa m^1/2].
+    ContactModel(std::vector<ElastoplasticMaterial> materials,
+                 std::vector<std::vector<double>>   toughness,
+                 double                             regularization = 0.01);
+
+    std::size_t
+    n_materials() const
+    {
+      return materials.size();
+    }
+
+    const ElastoplasticMaterial &
+    material(unsigned int a) const
+    {
+      return materials[a];
+    }
+
+    double
+    fracture_toughness(unsigned int a, unsigned int b) const
+    {
+      return toughness[a][b];
+    }
+
+    /// Solid bridges with the punches and the die wall, using the K_Ic of
+    /// the particle's material with itself (default off).
+    bool wall_bonding = false;
+
+    /// Use the regularized law (Eq. 4); false selects Eq. (2).
+    bool regularized = true;
+
+    /// xi_B [-].
+    double regularization;
+
+    BondedElastoplasticLaw
+    pair_law(unsigned int material_i,
+             double       R_i,
+             unsigned int material_j,
+             double       R_j) const;
+
+    /// Law of a particle against a rigid flat (punch or die wall; the die
+    /// wall's curvature is neglected in the law, R_die >> R).
+    BondedElastoplasticLaw
+    wall_law(unsigned int material_i, double R_i) const;
+
+  private:
+    std::vector<ElastoplasticMaterial> materials;
+    std::vector<std::vector<double>>   toughness;
+  };
+} // namespace compax::dem

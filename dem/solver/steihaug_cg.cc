@@ -1,0 +1,170 @@
+#include "dem/solver/steihaug_cg.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+
+namespace compax::dem
+{
+  void
+  BlockJacobiPreconditioner::compute(const BlockSparseMatrix &K,
+                                     const double             relative_floor)
+  {
+    const std::size_t n = K.n_block_rows();
+    m.resize(9 * n);
+    m_inv.resize(9 * n);
+    // Mean of the diagonal entries of the diagonal blocks.
+    double trace_sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        const double *b = K.block(K.diagonal_slot(i));
+        trace_sum += std::abs(b[0]) + std::abs(b[4]) + std::abs(b[8]);
+      }
+    scale_ = n > 0 && trace_sum > 0.0 ? trace_sum / (3.0 * n) : 1.0;
+    const double floor = relative_floor;
+
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>
+          b(K.block(K.diagonal_slot(i)));
+        eig.computeDirect(b / scale_);
+        Eigen::Vector3d lambda = eig.eigenvalues().cwiseAbs();
+        for (int d = 0; d < 3; ++d)
+          lambda[d] = std::max(lambda[d], floor);
+        const Eigen::Matrix3d &V = eig.eigenvectors();
+        const Eigen::Matrix3d  Mi = V * lambda.asDiagonal() * V.transpose();
+        const Eigen::Matrix3d  Mi_inv =
+          V * lambda.cwiseInverse().asDiagonal() * V.transpose();
+        for (int r = 0; r < 3; ++r)
+          for (int c = 0; c < 3; ++c)
+            {
+              m[9 * i + 3 * r + c]     = Mi(r, c);
+              m_inv[9 * i + 3 * r + c] = Mi_inv(r, c);
+            }
+      }
+  }
+
+  namespace
+  {
+    void
+    block_diagonal_product(const std::vector<double> &blocks,
+                           Eigen::VectorXd           &dst,
+                           const Eigen::VectorXd     &src)
+    {
+      const std::size_t n = blocks.size() / 9;
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          const double *a = blocks.data() + 9 * i;
+          const double *x = src.data() + 3 * i;
+          double       *y = dst.data() + 3 * i;
+          const double  x0 = x[0], x1 = x[1], x2 = x[2];
+          y[0] = a[0] * x0 + a[1] * x1 + a[2] * x2;
+          y[1] = a[3] * x0 + a[4] * x1 + a[5] * x2;
+          y[2] = a[6] * x0 + a[7] * x1 + a[8] * x2;
+        }
+    }
+  } // namespace
+
+  void
+  BlockJacobiPreconditioner::solve(Eigen::VectorXd       &dst,
+                                   const Eigen::VectorXd &src) const
+  {
+    block_diagonal_product(m_inv, dst, src);
+  }
+
+  void
+  BlockJacobiPreconditioner::multiply(Eigen::VectorXd       &dst,
+                                      const Eigen::VectorXd &src) const
+  {
+    block_diagonal_product(m, dst, src);
+  }
+
+  double
+  SteihaugCG::to_boundary(const Eigen::VectorXd           &s,
+                          const Eigen::VectorXd           &p,
+                          const BlockJacobiPreconditioner &M,
+                          const double                     radius)
+  {
+    M.multiply(Ms, s);
+    M.multiply(Mp, p);
+    const double pp = p.dot(Mp), sp = s.dot(Mp), ss = s.dot(Ms);
+    const double c  = ss - radius * radius;
+    if (pp <= 0.0)
+      return 0.0;
+    const double disc = std::sqrt(std::max(sp * sp - pp * c, 0.0));
+    return (-sp + disc) / pp;
+  }
+
+  SteihaugResult
+  SteihaugCG::solve(const BlockSparseMatrix          &K,
+                    const BlockJacobiPreconditioner &M,
+                    const Eigen::VectorXd           &g,
+                    const double                     radius,
+                    const double                     relative_tolerance,
+                    const int                        max_iterations,
+                    Eigen::VectorXd                 &s)
+  {
+    const Eigen::Index n = g.size();
+    s.setZero(n);
+    r.resize(n);
+    z.resize(n);
+    p.resize(n);
+    Kp.resize(n);
+    Ms.resize(n);
+    Mp.resize(n);
+
+    SteihaugResult result;
+    // K is in N/m; the preconditioner was scaled by M.scale(), so work with
+    // K / scale to keep the model consistent with |s|_M.
+    const double scale = M.scale();
+    r                  = g / scale;
+    M.solve(z, r);
+    p             = -z;
+    double rz     = r.dot(z);
+    const double rz0 = rz;
+    const double stop = relative_tolerance * relative_tolerance * rz0;
+
+    if (rz0 > 0.0)
+      for (int it = 0; it < max_iterations; ++it)
+        {
+          result.iterations = it + 1;
+          K.vmult(Kp, p);
+          Kp /= scale;
+          const double curvature = p.dot(Kp);
+          if (curvature <= 0.0)
+            {
+              s += to_boundary(s, p, M, radius) * p;
+              result.on_boundary        = true;
+              result.negative_curvature = true;
+              break;
+            }
+          const double alpha = rz / curvature;
+          // |s + alpha p|_M >= radius ?
+          M.multiply(Ms, s);
+          M.multiply(Mp, p);
+          const double ss = s.dot(Ms), sp = s.dot(Mp), pp = p.dot(Mp);
+          if (ss + 2.0 * alpha * sp + alpha * alpha * pp >= radius * radius)
+            {
+              s += to_boundary(s, p, M, radius) * p;
+              result.on_boundary = true;
+              break;
+            }
+          s += alpha * p;
+          r += alpha * Kp;
+          M.solve(z, r);
+          const double rz_new = r.dot(z);
+          if (rz_new <= stop)
+            break;
+          p = -z + (rz_new / rz) * p;
+          rz = rz_new;
+        }
+
+    K.vmult(Kp, s);
+    result.predicted_decrease = -(g.dot(s) + 0.5 * s.dot(Kp));
+    M.multiply(Ms, s);
+    result.step_norm = std::sqrt(std::max(s.dot(Ms), 0.0));
+    return result;
+  }
+} // namespace compax::dem

@@ -1,0 +1,102 @@
+#pragma once
+
+#include "dem/solver/bed.h"
+#include "dem/solver/block_sparse_matrix.h"
+#include "dem/solver/contact_assembler.h"
+#include "dem/solver/fire_relaxation.h"
+#include "dem/solver/steihaug_cg.h"
+
+#include <Eigen/Core>
+
+namespace compax::dem
+{
+  /// Tolerances and limits of the equilibrium solver.
+  struct EquilibriumOptions
+  {
+    /// Converged when every particle's net force is below this fraction of
+    /// the mean contact force [-].
+    double force_tolerance = 1e-6;
+    /// ... and the last step moved no particle farther than this fraction of
+    /// the mean radius [-].
+    double step_tolerance = 1e-4;
+    /// Newton iterations before the solve is declared failed.
+    int max_iterations = 200;
+    /// Conjugate-gradient iterations per Newton iteration.
+    int max_cg_iterations = 2000;
+    /// Initial and largest trust-region radius as fractions of the mean
+    /// radius [-].
+    double initial_radius = 0.05;
+    double max_radius     = 0.5;
+    /// Newton iterations without a tenfold drop of the residual after which
+    /// the solver relaxes the bed with FIRE before going on (unjammed beds).
+    int stall_iterations = 8;
+    /// FIRE iterations per fallback.
+    int fire_iterations = 5000;
+  };
+
+  /// Outcome of one equilibrium solve.
+  struct EquilibriumResult
+  {
+    bool        converged       = false;
+    int         iterations      = 0;
+    int         cg_iterations   = 0;
+    int         rejected_steps  = 0;
+    /// max_i |F_i| / mean contact force at the end [-].
+    double      relative_residual = 0.0;
+    ContactSums sums;
+    /// Time spent assembling F and K and in the linear solves [s].
+    double      assembly_seconds = 0.0;
+    double      linear_seconds   = 0.0;
+    int         assemblies       = 0;
+    int         fire_iterations  = 0;
+  };
+
+  /**
+   * Static equilibrium of a bed at fixed walls and fixed internal variables
+   * (Gonzalez 2018, Eq. 12 and Algorithm 1, lines 3-12): a trust-region
+   * Newton method on the bed's stored energy, whose gradient is the
+   * residual F and whose Hessian is K. Each step solves the trust-region
+   * subproblem with Steihaug-Toint conjugate gradients (block-Jacobi
+   * preconditioned, inexact with forcing term min(0.5, sqrt(|F|/|F_0|))),
+   * which handles indefinite K (geometric and softening terms) and the
+   * singular directions of rattlers. The energy change of a step is
+   * measured by the trapezoidal rule -(F(x) + F(x+s)).s/2, exact for a
+   * quadratic energy, so no energy needs to be evaluated.
+   */
+  class TrustRegionNewton
+  {
+  public:
+    explicit TrustRegionNewton(EquilibriumOptions options = {});
+
+    /// Moves bed.particles to equilibrium; bed.walls and histories fixed.
+    EquilibriumResult
+    solve(Bed &bed, const ContactModel &model);
+
+    const EquilibriumOptions &
+    options() const
+    {
+      return opts;
+    }
+
+    /// The stiffness at the last evaluated state.
+    const BlockSparseMatrix &
+    stiffness() const
+    {
+      return K;
+    }
+
+  private:
+    EquilibriumOptions        opts;
+    ContactAssembler          assembler;
+    BlockSparseMatrix         K;
+    BlockJacobiPreconditioner M;
+    SteihaugCG                cg;
+    FireRelaxation            fire;
+    Eigen::VectorXd           F, F_old, x_old, s;
+    double                    radius = -1.0;
+  };
+
+  /// max_i |F_i| over particles (F has 3 entries per particle).
+  double
+  max_particle_norm(const Eigen::VectorXd &F);
+} // namespace compax::dem

@@ -1,0 +1,128 @@
+#pragma once
+
+// Runs the real `compax` executable in a fresh folder and reads what it
+// wrote, for the application tests.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace compax::testing
+{
+  /// What one run of the executable produced.
+  struct RunResult
+  {
+    int         exit_code;
+    std::string out;
+    std::string err;
+  };
+
+  /// A fresh working folder per test, removed afterwards.
+  class AppTest : public ::testing::Test
+  {
+  protected:
+    void
+    SetUp() override
+    {
+      const auto *info = ::testing::UnitTest::GetInstance()->current_test_info();
+      folder = std::filesystem::temp_directory_path()
+               / ("compax-app-" + std::string(info->test_suite_name()) + "-"
+                  + info->name() + "-" + std::to_string(::getpid()));
+      std::filesystem::remove_all(folder);
+      std::filesystem::create_directories(folder);
+    }
+
+    void
+    TearDown() override
+    {
+      std::filesystem::remove_all(folder);
+    }
+
+    /// Runs `compax <arguments>` in the test folder.
+    RunResult
+    compax(const std::string &arguments) const
+    {
+      const auto        out = folder / "stdout.txt", err = folder / "stderr.txt";
+      const std::string command = "cd '" + folder.string() + "' && '"
+                                  + COMPAX_EXECUTABLE + "' " + arguments
+                                  + " > '" + out.string() + "' 2> '"
+                                  + err.string() + "'";
+      const int status = std::system(command.c_str());
+      RunResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+                  read(out),
+                  read(err)};
+      std::filesystem::remove(out);
+      std::filesystem::remove(err);
+      return r;
+    }
+
+    /// Writes a file in the test folder.
+    void
+    write(const std::string &name, const std::string &text) const
+    {
+      std::ofstream(folder / name) << text;
+    }
+
+    static std::string
+    read(const std::filesystem::path &file)
+    {
+      std::ifstream      in(file);
+      std::ostringstream text;
+      text << in.rdbuf();
+      return text.str();
+    }
+
+    /// Names in the test folder (for "no half-written output" checks).
+    std::vector<std::string>
+    entries() const
+    {
+      std::vector<std::string> names;
+      for (const auto &e : std::filesystem::directory_iterator(folder))
+        names.push_back(e.path().filename().string());
+      return names;
+    }
+
+    std::filesystem::path folder;
+  };
+
+  /// A CSV file as its header and numeric columns by name.
+  struct Csv
+  {
+    std::vector<std::string>                   header;
+    std::map<std::string, std::vector<double>> column;
+
+    explicit Csv(const std::filesystem::path &file)
+    {
+      std::ifstream in(file);
+      std::string   line;
+      std::getline(in, line);
+      std::stringstream names(line);
+      for (std::string name; std::getline(names, name, ',');)
+        header.push_back(name);
+      while (std::getline(in, line))
+        {
+          std::stringstream cells(line);
+          std::string       cell;
+          for (const auto &name : header)
+            {
+              std::getline(cells, cell, ',');
+              column[name].push_back(cell.empty() ? 0.0 : std::stod(cell));
+            }
+        }
+    }
+
+    std::size_t
+    rows() const
+    {
+      return column.empty() ? 0 : column.begin()->second.size();
+    }
+  };
+} // namespace compax::testing

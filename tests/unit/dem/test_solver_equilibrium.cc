@@ -1,0 +1,191 @@
+#include "dem/solver/load_stepper.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace compax::dem;
+
+namespace
+{
+  constexpr double pi = 3.14159265358979323846;
+
+  // Material 1 of Gonzalez 2018, Table 1.
+  constexpr double E = 5e9, nu = 0.25, kappa = 150e6, m = 2.0, R = 220e-6;
+
+  /// Plastic loading written out from Gonzalez 2018 Sec. 2-3, independently
+  /// of compax: P = n_p a^{2+1/m}, a^2 = 2 c^2 R* gamma,
+  /// n_p = pi k_m R*^{-1/m} kappa*, k_m = 3 6^{-1/m}, c^2 = 1.43 e^{-0.97/m}.
+  struct PlasticLaw
+  {
+    double R_eff, kappa_eff;
+    double
+    force(double gamma) const
+    {
+      const double c2  = 1.43 * std::exp(-0.97 / m);
+      const double n_p = pi * 3.0 * std::pow(6.0, -1.0 / m)
+                         * std::pow(R_eff, -1.0 / m) * kappa_eff;
+      const double a = std::sqrt(2.0 * c2 * R_eff * gamma);
+      return n_p * std::pow(a, 2.0 + 1.0 / m);
+    }
+    double
+    overlap(double P) const // inverse of force()
+    {
+      double lo = 0.0, hi = R;
+      for (int i = 0; i < 200; ++i)
+        (force(0.5 * (lo + hi)) < P ? lo : hi) = 0.5 * (lo + hi);
+      return 0.5 * (lo + hi);
+    }
+  };
+  const PlasticLaw sphere_flat{R, kappa};
+  const PlasticLaw sphere_sphere{R / 2, kappa * std::pow(2.0, -1.0 / m)};
+
+  ContactModel
+  material1()
+  {
+    return ContactModel(ElastoplasticMaterial{E, nu, kappa, m}, 1.26e6);
+  }
+
+  double
+  net_force_check(Bed &bed, const ContactModel &model, ContactSums &sums)
+  {
+    ContactAssembler a;
+    Eigen::VectorXd  F;
+    sums = a.residual(bed, model, F);
+    return max_particle_norm(F) / sums.mean_force;
+  }
+} // namespace
+
+/// One sphere between two punches: two identical sphere-flat contacts in
+/// series, each with overlap delta/2; then elastic unloading along Eq. (4)
+/// without a bridge (no bonding with walls by default).
+TEST(SolverEquilibrium, SphereBetweenPunches)
+{
+  const ContactModel model = material1();
+  Bed                bed;
+  bed.walls.diameter    = 10 * R;
+  bed.walls.upper_punch = 2 * R;
+  bed.contacts.set_skin(0.3 * R);
+  bed.particles.add({0.3 * R, 0.1 * R, 0.8 * R}, R);
+  LoadStepper stepper(model);
+
+  const double delta = 0.1 * R;
+  DieWalls     w     = bed.walls;
+  w.upper_punch      = 2 * R - delta;
+  ASSERT_TRUE(stepper.advance(bed, w).converged);
+  ContactSums sums;
+  EXPECT_LT(net_force_check(bed, model, sums), 1e-6);
+  const double P = sphere_flat.force(delta / 2);
+  EXPECT_NEAR(sums.wall_force[int(Wall::upper_punch)], P, 1e-8 * P);
+  EXPECT_NEAR(sums.wall_force[int(Wall::lower_punch)], P, 1e-8 * P);
+  EXPECT_NEAR(bed.particles.positions[0][2], R - delta / 2, 1e-9 * R);
+
+  // Unload by delta_u: each contact recovers delta_u / 2 elastically,
+  // P = 2 n_p/pi a_p^{2+1/m} (asin x - x sqrt(1-x^2)), x = a/a_p,
+  // a^2 = a_p^2 - (4 E* (gamma_p - gamma)/(3 n_p a_p^{1/m}))^2, E* of a
+  // sphere on a rigid flat E/(1-nu^2).
+  const double c2    = 1.43 * std::exp(-0.97 / m);
+  const double n_p   = pi * 3.0 * std::pow(6.0, -1.0 / m) * std::pow(R, -1.0 / m)
+                     * kappa;
+  const double a_p   = std::sqrt(2 * c2 * R * delta / 2);
+  const double E_eff = E / (1 - nu * nu);
+  const double du    = 0.2 * 3 * n_p * std::pow(a_p, 1 + 1 / m) / (4 * E_eff);
+  w.upper_punch += 2 * du;
+  ASSERT_TRUE(stepper.advance(bed, w).converged);
+  net_force_check(bed, model, sums);
+  const double rec = 4 * E_eff * du / (3 * n_p * std::pow(a_p, 1 / m));
+  const double x   = std::sqrt(a_p * a_p - rec * rec) / a_p;
+  const double Pu  = 2 * n_p / pi * std::pow(a_p, 2 + 1 / m)
+                    * (std::asin(x) - x * std::sqrt(1 - x * x));
+  EXPECT_NEAR(sums.wall_force[int(Wall::upper_punch)], Pu, 1e-7 * P);
+  EXPECT_NEAR(sums.wall_force[int(Wall::lower_punch)], Pu, 1e-7 * P);
+}
+
+/// Two spheres side by side across a die narrower than 4R: die wall -
+/// sphere - sphere - die wall in series, 2 gamma_w + gamma_pp = 4R - D with
+/// equal forces; the punches squeeze each sphere by gamma_z, which keeps
+/// them from sliding past each other and does not act horizontally.
+TEST(SolverEquilibrium, SpheresPressedAgainstDieWall)
+{
+  const ContactModel model = material1();
+  Bed                bed;
+  const double       total = 0.08 * R, gamma_z = 0.02 * R;
+  bed.walls.diameter       = 4 * R - total;
+  bed.walls.upper_punch    = 2 * R - 2 * gamma_z;
+  bed.contacts.set_skin(0.3 * R);
+  bed.particles.add({-R + 0.03 * R, 0.0, R}, R);
+  bed.particles.add({R, 0.01 * R, R - 0.01 * R}, R);
+  LoadStepper stepper(model);
+  ASSERT_TRUE(stepper.equilibrate(bed).converged);
+
+  // Series solution by bisection on the common force.
+  double lo = 0.0, hi = sphere_flat.force(total);
+  for (int i = 0; i < 200; ++i)
+    {
+      const double P = 0.5 * (lo + hi);
+      (2 * sphere_flat.overlap(P) + sphere_sphere.overlap(P) < total ? lo : hi) =
+        P;
+    }
+  const double P = 0.5 * (lo + hi);
+  ContactSums  sums;
+  EXPECT_LT(net_force_check(bed, model, sums), 1e-6);
+  EXPECT_NEAR(sums.wall_force[int(Wall::die)], 2 * P, 1e-7 * P);
+  const double Pz = sphere_flat.force(gamma_z);
+  EXPECT_NEAR(sums.wall_force[int(Wall::upper_punch)], 2 * Pz, 1e-7 * Pz);
+  EXPECT_NEAR(sums.wall_force[int(Wall::lower_punch)], 2 * Pz, 1e-7 * Pz);
+  const double d =
+    (bed.particles.positions[0] - bed.particles.positions[1]).norm();
+  EXPECT_NEAR(d, 2 * R - sphere_sphere.overlap(P), 1e-9 * R);
+}
+
+/// A simple-cubic column of N spheres between the punches: N + 1 contacts
+/// carry the same force, 2 sphere-flat contacts with gamma_w and N - 1
+/// sphere-sphere contacts with gamma_pp, 2 gamma_w + (N-1) gamma_pp equal
+/// to the punch displacement. (The two laws differ, so the overlaps are not
+/// all the same; with equal laws they would be displacement / (N + 1).)
+/// A rattler sits in the die away from the column and must not disturb
+/// the solver.
+TEST(SolverEquilibrium, SimpleCubicColumnAndRattler)
+{
+  const ContactModel model = material1();
+  const int          N     = 6;
+  Bed                bed;
+  bed.walls.diameter    = 12 * R;
+  bed.walls.upper_punch = 2 * R * N;
+  bed.contacts.set_skin(0.3 * R);
+  for (int k = 0; k < N; ++k)
+    bed.particles.add({0.0, 0.0, R + 2 * R * k}, R);
+  const Eigen::Vector3d rattler(4 * R, 0.0, 3 * R);
+  bed.particles.add(rattler, R);
+  LoadStepper stepper(model);
+
+  for (const double total : {0.05 * R, 0.2 * R, 0.5 * R})
+    {
+      DieWalls w    = bed.walls;
+      w.upper_punch = 2 * R * N - total;
+      const auto r  = stepper.advance(bed, w);
+      ASSERT_TRUE(r.converged);
+      double lo = 0.0, hi = sphere_flat.force(total);
+      for (int i = 0; i < 200; ++i)
+        {
+          const double P = 0.5 * (lo + hi);
+          (2 * sphere_flat.overlap(P) + (N - 1) * sphere_sphere.overlap(P)
+               < total ?
+             lo :
+             hi) = P;
+        }
+      const double P = 0.5 * (lo + hi);
+      ContactSums  sums;
+      EXPECT_LT(net_force_check(bed, model, sums), 1e-6);
+      EXPECT_NEAR(sums.wall_force[int(Wall::upper_punch)], P, 1e-7 * P);
+      EXPECT_NEAR(sums.wall_force[int(Wall::lower_punch)], P, 1e-7 * P);
+      EXPECT_NEAR(bed.particles.positions[0][2],
+                  R - sphere_flat.overlap(P),
+                  1e-9 * R);
+      // The rattler carries no force and keeps where the affine predictor
+      // of the punch motion put it.
+      const Eigen::Vector3d moved(
+        rattler[0], rattler[1], rattler[2] * w.height() / (2 * R * N));
+      EXPECT_LT((bed.particles.positions[N] - moved).norm(), 1e-12 * R);
+    }
+}

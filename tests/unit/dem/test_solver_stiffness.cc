@@ -1,0 +1,96 @@
+#include "dem/solver/contact_assembler.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace compax::dem;
+
+/// K = dF/dx against a central finite difference of F on a small random
+/// bed whose contacts are in plastic loading, in elastic unloading with a
+/// solid bridge (a < a_B = a_p), and against the punches and the die wall.
+TEST(SolverStiffness, EqualsCentralDifferenceOfResidual)
+{
+  const ElastoplasticMaterial mat{5e9, 0.25, 150e6, 2.0};
+  const ContactModel          model(mat, 1.26e6);
+  const double                R = 220e-6;
+
+  Bed bed;
+  // Spacing 0.94 (2R): every face neighbour overlaps by 0.045R..0.2R, far
+  // from the onset of contact where P'' is unbounded; the corner
+  // particles press into the die wall, the layers into the punches.
+  const double a = 2 * R * 0.94;
+  bed.walls.diameter    = 2 * (std::sqrt(2.0) * a + R - 0.05 * R);
+  bed.walls.lower_punch = 0.0;
+  bed.walls.upper_punch = a + 2 * R * 0.94;
+  bed.contacts.set_skin(0.5 * R);
+  std::mt19937_64 rng(42);
+  auto            u = [&]() { return (rng() >> 11) * 0x1.0p-53 - 0.5; };
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i)
+        {
+          Eigen::Vector3d x((i - 1) * a, (j - 1) * a, R * 0.94 + k * a);
+          x += 0.02 * R * Eigen::Vector3d(u(), u(), u());
+          bed.particles.add(x, R * (1.0 + 0.04 * u()));
+        }
+  bed.contacts.rebuild(bed.particles, bed.walls, model);
+
+  // Every other loaded pair is put on its elastic unloading branch.
+  int n_unloading = 0, n_loading = 0, n_wall = 0;
+  for (std::size_t k = 0; k < bed.contacts.pairs.size(); ++k)
+    {
+      PairContact &c     = bed.contacts.pairs[k];
+      const double gamma = pair_overlap(bed.particles, c);
+      if (gamma <= 0.0)
+        continue;
+      if (k % 2 == 0)
+        {
+          ++n_loading;
+          continue;
+        }
+      // gamma = gamma_p - 0.3 (gamma_p - gamma_break(a_p)), by fixed point.
+      double a_p = c.law.plastic_radius(gamma);
+      for (int it = 0; it < 50; ++it)
+        {
+          const double drop =
+            c.law.plastic_overlap(a_p) - c.law.breakage_overlap(a_p);
+          a_p = c.law.plastic_radius(gamma + 0.3 * drop);
+        }
+      c.history.a_p = a_p;
+      c.history.a_B = a_p;
+      ++n_unloading;
+    }
+  for (const auto &c : bed.contacts.walls)
+    n_wall += bed.walls.gap(c.wall, bed.particles.positions[c.i], R).overlap
+              > 0.0;
+  ASSERT_GE(n_loading, 3);
+  ASSERT_GE(n_unloading, 3);
+  ASSERT_GE(n_wall, 3);
+
+  ContactAssembler  assembler;
+  BlockSparseMatrix K;
+  Eigen::VectorXd   F, Fp, Fm;
+  assembler.assemble(bed, model, F, K);
+  const Eigen::MatrixXd Kd(K.to_sparse());
+  EXPECT_LT((Kd - Kd.transpose()).norm(), 1e-12 * Kd.norm());
+
+  const double    h = 1e-10;
+  Eigen::MatrixXd fd(Kd.rows(), Kd.cols());
+  auto            x = bed.particles.coordinates();
+  for (Eigen::Index k = 0; k < x.size(); ++k)
+    {
+      const double x0 = x[k];
+      x[k]            = x0 + h;
+      assembler.residual(bed, model, Fp);
+      x[k] = x0 - h;
+      assembler.residual(bed, model, Fm);
+      x[k]        = x0;
+      fd.col(k)   = (Fp - Fm) / (2 * h);
+    }
+  for (Eigen::Index k = 0; k < x.size(); ++k)
+    EXPECT_LT((Kd.col(k) - fd.col(k)).norm(), 1e-6 * Kd.col(k).norm())
+      << "column " << k;
+  EXPECT_LT((Kd - fd).norm(), 1e-6 * Kd.norm());
+}
