@@ -122,10 +122,10 @@ namespace compax::cli
                    const std::string                   &unit,
                    const std::string                   &documentation)
   {
-    prm.declare_entry(name,
-                      default_value,
-                      pattern,
-                      documentation + " Unit: " + unit + ".");
+    std::string text = documentation + " Unit: " + unit + ".";
+    if (const auto *interval = dynamic_cast<const RealInterval *>(&pattern))
+      text += " Allowed: " + interval->interval() + ".";
+    prm.declare_entry(name, default_value, pattern, text);
   }
 
   void

@@ -66,4 +66,10 @@ namespace compax::cli
     out << '\n';
     cells = 0;
   }
+
+  void
+  CsvWriter::close()
+  {
+    out.close();
+  }
 } // namespace compax::cli

@@ -39,6 +39,10 @@ namespace compax::cli
     void
     end_row();
 
+    /// Flushes and closes the file, e.g. before a plot reads it.
+    void
+    close();
+
   private:
     void
     separate();

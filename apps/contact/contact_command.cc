@@ -126,6 +126,7 @@ namespace compax::cli
                 summary.pull_off_radius = r.contact_radius;
               }
           }
+        csv.close();
         print_summary(pair,
                       summary,
                       *std::max_element(path.begin(), path.end()));

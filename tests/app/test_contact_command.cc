@@ -164,3 +164,29 @@ TEST_F(ContactCommand, MissingFileIsRejected)
   EXPECT_NE(r.err.find("nowhere.prm"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(folder / "out"));
 }
+
+TEST_F(ContactCommand, EveryLawRunsAndMulticontactReducesToHertz)
+{
+  const std::string path = "subsection Overlap history\n set Turning points "
+                           "= 0, 28.2e-9, 5e-9, 20e-9\n set Steps per "
+                           "segment = 50\nend\n";
+  write("hertz.prm", "set Law = hertz\n" + path);
+  write("multi.prm",
+        "set Law = multicontact-adhesive\n" + path
+          + "subsection Multi-contact\n set Unloading stiffness ratio = 1\n"
+            " set Adhesion stiffness ratio = 0\n set Prefactor = 0\nend\n");
+  write("nonlocal.prm", "set Law = nonlocal-hertz\n" + path);
+  ASSERT_EQ(compax("contact hertz.prm -o hertz").exit_code, 0);
+  ASSERT_EQ(compax("contact multi.prm -o multi").exit_code, 0);
+  ASSERT_EQ(compax("contact nonlocal.prm -o nonlocal").exit_code, 0);
+  const Csv hertz(folder / "hertz" / "contact.csv");
+  const Csv multi(folder / "multi" / "contact.csv");
+  const Csv nonlocal(folder / "nonlocal" / "contact.csv");
+  for (std::size_t i = 0; i < hertz.rows(); ++i)
+    {
+      const double P = hertz.column.at("force")[i];
+      EXPECT_NEAR(multi.column.at("force")[i], P, 1e-9 * P);
+      // The nonlocal overlap of Tatara's configuration only stiffens.
+      EXPECT_GE(nonlocal.column.at("force")[i], P);
+    }
+}
