@@ -39,8 +39,8 @@ namespace compax::dem
       }
     for (int d = 0; d < 3; ++d)
       dims[d] = std::max(1, static_cast<int>((hi[d] - lo[d]) / cell) + 1);
-    const std::size_t n_cells =
-      static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
+    const std::size_t n_cells
+      = static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
 
     particle_cell.resize(n);
     cell_start.assign(n_cells + 1, 0);
@@ -60,7 +60,7 @@ namespace compax::dem
     cell_particles.resize(n);
     {
       std::vector<std::uint32_t> &fill = particle_cell; // reuse after copy
-      std::vector<std::uint32_t>  next(cell_start.begin(), cell_start.end() - 1);
+      std::vector<std::uint32_t> next(cell_start.begin(), cell_start.end() - 1);
       for (std::size_t i = 0; i < n; ++i)
         cell_particles[next[fill[i]]++] = static_cast<std::uint32_t>(i);
     }

@@ -13,17 +13,19 @@ namespace compax::dem
     {
     public:
       DepositionGrid(double die_radius, double cell)
-        : r_die(die_radius)
-        , cell(cell)
-        , n_xy(std::max(1, static_cast<int>(std::ceil(2 * die_radius / cell))))
-        , columns(n_xy * n_xy)
-      {}
+          : r_die(die_radius)
+          , cell(cell)
+          , n_xy(
+              std::max(1, static_cast<int>(std::ceil(2 * die_radius / cell))))
+          , columns(n_xy * n_xy)
+      {
+      }
 
       void
       insert(const ParticleSystem &p, std::uint32_t i)
       {
-        auto &col = columns[column(p.positions[i])];
-        const int zb = z_bin(p.positions[i][2]);
+        auto     &col = columns[column(p.positions[i])];
+        const int zb  = z_bin(p.positions[i][2]);
         if (static_cast<int>(col.size()) <= zb)
           col.resize(zb + 1);
         col[zb].push_back(i);
@@ -33,7 +35,9 @@ namespace compax::dem
       /// z bins [z_lo, z_hi] (all if z_hi < z_lo).
       template <typename Function>
       void
-      for_each_near(const Eigen::Vector3d &x, bool all_heights, Function f) const
+      for_each_near(const Eigen::Vector3d &x,
+                    bool                   all_heights,
+                    Function               f) const
       {
         const int cx = xy_bin(x[0]), cy = xy_bin(x[1]), cz = z_bin(x[2]);
         for (int dy = -1; dy <= 1; ++dy)
@@ -44,8 +48,9 @@ namespace compax::dem
                 continue;
               const auto &col = columns[iy * n_xy + ix];
               const int   lo  = all_heights ? 0 : std::max(0, cz - 1);
-              const int   hi  = all_heights ? static_cast<int>(col.size()) - 1 :
-                                              std::min<int>(cz + 1, col.size() - 1);
+              const int   hi  = all_heights
+                                  ? static_cast<int>(col.size()) - 1
+                                  : std::min<int>(cz + 1, col.size() - 1);
               for (int z = lo; z <= hi; ++z)
                 for (const std::uint32_t j : col[z])
                   f(j);
@@ -69,8 +74,8 @@ namespace compax::dem
         return xy_bin(x[1]) * n_xy + xy_bin(x[0]);
       }
 
-      double                                        r_die, cell;
-      int                                           n_xy;
+      double                                               r_die, cell;
+      int                                                  n_xy;
       std::vector<std::vector<std::vector<std::uint32_t>>> columns;
     };
   } // namespace
@@ -84,23 +89,24 @@ namespace compax::dem
     const double   r_max = prm.sizes.largest();
     if (2.0 * r_max >= r_die)
       throw std::invalid_argument("particles do not fit into the die");
-    DepositionGrid grid(r_die, 2.0 * r_max);
+    DepositionGrid      grid(r_die, 2.0 * r_max);
     std::vector<double> cumulative;
     for (const double f : prm.material_fractions)
       cumulative.push_back((cumulative.empty() ? 0.0 : cumulative.back()) + f);
 
     for (std::size_t n = 0; n < prm.n_particles; ++n)
       {
-        const double R = prm.sizes.sample(random);
+        const double R        = prm.sizes.sample(random);
         unsigned int material = 0;
         if (!cumulative.empty())
           {
             const double u = random.uniform() * cumulative.back();
-            while (material + 1 < cumulative.size() && u >= cumulative[material])
+            while (material + 1 < cumulative.size()
+                   && u >= cumulative[material])
               ++material;
           }
         // Uniform position in the disk of radius r_die - R.
-        const double reach = r_die - R;
+        const double    reach = r_die - R;
         Eigen::Vector3d x;
         do
           {
@@ -113,9 +119,9 @@ namespace compax::dem
         x[2] = R;
         grid.for_each_near(x, true, [&](std::uint32_t j) {
           const Eigen::Vector3d &y = p.positions[j];
-          const double s  = R + p.radii[j];
-          const double h2 = (x[0] - y[0]) * (x[0] - y[0])
-                            + (x[1] - y[1]) * (x[1] - y[1]);
+          const double           s = R + p.radii[j];
+          const double           h2
+            = (x[0] - y[0]) * (x[0] - y[0]) + (x[1] - y[1]) * (x[1] - y[1]);
           if (h2 < s * s)
             x[2] = std::max(x[2], y[2] + std::sqrt(s * s - h2));
         });
@@ -138,13 +144,14 @@ namespace compax::dem
                   moved = true;
                 }
               grid.for_each_near(q, false, [&](std::uint32_t j) {
-                const Eigen::Vector3d d = q - p.positions[j];
-                const double          s = R + p.radii[j];
+                const Eigen::Vector3d d    = q - p.positions[j];
+                const double          s    = R + p.radii[j];
                 const double          dist = d.norm();
                 if (dist < s * (1.0 - 1e-13))
                   {
                     q = p.positions[j]
-                        + (dist > 0.0 ? d / dist : Eigen::Vector3d::UnitZ().eval())
+                        + (dist > 0.0 ? d / dist
+                                      : Eigen::Vector3d::UnitZ().eval())
                             * s;
                     moved = true;
                   }

@@ -11,7 +11,7 @@ namespace compax::dem
   /// Parameters of a ballistic deposition into a die.
   struct DepositionParameters
   {
-    std::size_t      n_particles = 500;
+    std::size_t n_particles = 500;
     /// Die diameter D [m] (axis z through the origin, floor at z = 0).
     double           die_diameter = 4e-3;
     SizeDistribution sizes;

@@ -15,8 +15,9 @@ namespace compax::dem
   {
   public:
     explicit RandomSource(std::uint64_t seed)
-      : engine(seed)
-    {}
+        : engine(seed)
+    {
+    }
 
     /// Uniform on [0, 1) with 53 random bits.
     double

@@ -36,8 +36,8 @@ namespace compax::dem
         const auto begin = columns.begin() + row_start[i];
         const auto end   = columns.begin() + row_start[i + 1];
         std::sort(begin, end);
-        const auto  last  = std::unique(begin, end);
-        const auto  first = out;
+        const auto last  = std::unique(begin, end);
+        const auto first = out;
         for (auto it = begin; it != last; ++it)
           {
             if (*it == i)
@@ -102,7 +102,9 @@ namespace compax::dem
       for (std::uint32_t k = row_start[i]; k < row_start[i + 1]; ++k)
         for (int a = 0; a < 3; ++a)
           for (int b = 0; b < 3; ++b)
-            t.emplace_back(3 * i + a, 3 * columns[k] + b, values[9 * k + 3 * a + b]);
+            t.emplace_back(3 * i + a,
+                           3 * columns[k] + b,
+                           values[9 * k + 3 * a + b]);
     Eigen::SparseMatrix<double> m(3 * n, 3 * n);
     m.setFromTriplets(t.begin(), t.end());
     return m;

@@ -78,12 +78,15 @@ namespace compax::dem
     const auto &pairs = bed.contacts.pairs;
     for (std::size_t k = 0; k < pairs.size(); ++k)
       {
-        const PairContact     &c = pairs[k];
-        const Eigen::Vector3d  d = p.positions[c.i] - p.positions[c.j];
-        const double           dist  = d.norm();
-        const double           gamma = p.radii[c.i] + p.radii[c.j] - dist;
-        const ContactResponse  r =
-          c.law.response(gamma, c.history.a_p, c.history.a_B);
+        const PairContact    &c     = pairs[k];
+        const Eigen::Vector3d d     = p.positions[c.i] - p.positions[c.j];
+        const double          dist  = d.norm();
+        const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
+        if (gamma > 0.0 && gamma < touch_tolerance * dist
+            && c.history.a_p == 0.0)
+          continue; // touching within round-off of the coordinates
+        const ContactResponse r
+          = c.law.response(gamma, c.history.a_p, c.history.a_B);
         if (r.force == 0.0 && r.stiffness == 0.0)
           continue;
         const Eigen::Vector3d n = d / dist;
@@ -108,10 +111,12 @@ namespace compax::dem
 
     for (const WallContact &c : bed.contacts.walls)
       {
-        const WallGap g =
-          bed.walls.gap(c.wall, p.positions[c.i], p.radii[c.i]);
-        const ContactResponse r =
-          c.law.response(g.overlap, c.history.a_p, c.history.a_B);
+        const WallGap g = bed.walls.gap(c.wall, p.positions[c.i], p.radii[c.i]);
+        if (g.overlap > 0.0 && g.overlap < touch_tolerance * p.radii[c.i]
+            && c.history.a_p == 0.0)
+          continue;
+        const ContactResponse r
+          = c.law.response(g.overlap, c.history.a_p, c.history.a_B);
         if (r.force == 0.0 && r.stiffness == 0.0)
           continue;
         F.template segment<3>(3 * c.i) -= r.force * g.normal;
@@ -129,7 +134,7 @@ namespace compax::dem
               {
                 // d(-P e_r)/dx with e_r turning: +P/r (I_xy - e_r e_r^T)
                 // in F = +P e_r (the wall pushes along -e_r).
-                const double s = r.force / g.axis_distance;
+                const double s  = r.force / g.axis_distance;
                 const double ex = -g.normal[0], ey = -g.normal[1];
                 blk[0] += s * (1.0 - ex * ex);
                 blk[1] += s * (-ex * ey);

@@ -39,6 +39,15 @@ namespace compax::dem
   class ContactAssembler
   {
   public:
+    /**
+     * Virgin contacts whose overlap is below this fraction of the centre
+     * distance are treated as touching without force: such overlaps are
+     * round-off of the coordinates (a deposited bed touches exactly), and
+     * their forces (~1e-12 N for R = 220 um) would otherwise set the
+     * scale of the convergence test of an unloaded bed.
+     */
+    static constexpr double touch_tolerance = 0.0;
+
     /// F only (refreshes the contact list if needed).
     ContactSums
     residual(Bed &bed, const ContactModel &model, Eigen::VectorXd &F);

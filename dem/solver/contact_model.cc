@@ -9,17 +9,18 @@ namespace compax::dem
   ContactModel::ContactModel(const ElastoplasticMaterial &material,
                              const double                 fracture_toughness,
                              const double                 regularization)
-    : ContactModel(std::vector<ElastoplasticMaterial>{material},
-                   {{fracture_toughness}},
-                   regularization)
-  {}
+      : ContactModel(std::vector<ElastoplasticMaterial>{material},
+                     {{fracture_toughness}},
+                     regularization)
+  {
+  }
 
   ContactModel::ContactModel(std::vector<ElastoplasticMaterial> materials_,
                              std::vector<std::vector<double>>   toughness_,
                              const double                       regularization)
-    : regularization(regularization)
-    , materials(std::move(materials_))
-    , toughness(std::move(toughness_))
+      : regularization(regularization)
+      , materials(std::move(materials_))
+      , toughness(std::move(toughness_))
   {
     if (materials.empty())
       throw std::invalid_argument("a contact model needs a material");

@@ -25,8 +25,9 @@ namespace compax::dem
   } // namespace
 
   ContactSet::ContactSet(const double skin)
-    : skin_(skin)
-  {}
+      : skin_(skin)
+  {
+  }
 
   bool
   ContactSet::update(const ParticleSystem &particles,
@@ -65,7 +66,7 @@ namespace compax::dem
     old_pairs.swap(pairs);
     pairs.clear();
     pairs.reserve(candidates.size() + 16);
-    std::size_t k = 0;
+    std::size_t k    = 0;
     auto        make = [&](const ParticlePair &ij) {
       const auto i = ij.first, j = ij.second;
       return PairContact{i,
@@ -113,11 +114,11 @@ namespace compax::dem
                 walls.push_back(old_walls[k]);
               ++k;
             }
-          const bool old_match =
-            k < old_walls.size() && old_walls[k].i == i
-            && old_walls[k].wall == wall;
-          const double gap =
-            -die.gap(wall, particles.positions[i], particles.radii[i]).overlap;
+          const bool old_match = k < old_walls.size() && old_walls[k].i == i
+                                 && old_walls[k].wall == wall;
+          const double gap
+            = -die.gap(wall, particles.positions[i], particles.radii[i])
+                 .overlap;
           const bool near = gap < skin_;
           if (old_match)
             {
@@ -126,11 +127,11 @@ namespace compax::dem
               ++k;
             }
           else if (near)
-            walls.push_back(WallContact{
-              i,
-              wall,
-              model.wall_law(particles.materials[i], particles.radii[i]),
-              ContactHistory{}});
+            walls.push_back(WallContact{i,
+                                        wall,
+                                        model.wall_law(particles.materials[i],
+                                                       particles.radii[i]),
+                                        ContactHistory{}});
         }
     for (; k < old_walls.size(); ++k)
       if (has_history(old_walls[k].history))
@@ -139,7 +140,7 @@ namespace compax::dem
     reference_positions = particles.positions;
     for (int w = 0; w < n_walls; ++w)
       reference_walls[w] = die.coordinate(static_cast<Wall>(w));
-    built = true;
+    built     = true;
     revision_ = next_revision();
   }
 

@@ -93,15 +93,15 @@ namespace compax::dem
     update_histories(const ParticleSystem &particles, const DieWalls &walls);
 
   private:
-    double                     skin_;
-    std::uint64_t              revision_ = 0;
-    bool                       built     = false;
-    CellGrid                   grid;
-    std::vector<ParticlePair>  candidates;
-    std::vector<PairContact>   old_pairs;
-    std::vector<WallContact>   old_walls;
+    double                       skin_;
+    std::uint64_t                revision_ = 0;
+    bool                         built     = false;
+    CellGrid                     grid;
+    std::vector<ParticlePair>    candidates;
+    std::vector<PairContact>     old_pairs;
+    std::vector<WallContact>     old_walls;
     std::vector<Eigen::Vector3d> reference_positions;
-    double                     reference_walls[n_walls] = {0.0, 0.0, 0.0};
+    double                       reference_walls[n_walls] = {0.0, 0.0, 0.0};
   };
 
   /// Overlap gamma = R_i + R_j - |x_i - x_j| of a pair contact [m].

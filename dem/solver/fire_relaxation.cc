@@ -22,13 +22,13 @@ namespace compax::dem
     FireResult   result;
 
     auto update_mass = [&]() {
-      const ContactSums s = assembler.assemble(bed, model, F, K);
+      const ContactSums s    = assembler.assemble(bed, model, F, K);
       double            mean = 0.0;
       for (std::size_t i = 0; i < n; ++i)
         {
           const double *b = K.block(K.diagonal_slot(i));
-          mean += std::max(b[0], 0.0) + std::max(b[4], 0.0)
-                  + std::max(b[8], 0.0);
+          mean
+            += std::max(b[0], 0.0) + std::max(b[4], 0.0) + std::max(b[8], 0.0);
         }
       mean = mean / (3.0 * std::max<std::size_t>(n, 1));
       if (mean <= 0.0)
@@ -45,10 +45,11 @@ namespace compax::dem
     ContactSums sums = update_mass();
     for (int it = 0; it < max_iterations; ++it)
       {
-        result.iterations = it + 1;
-        const double fmax = max_particle_norm(F);
-        result.relative_residual =
-          sums.mean_force > 0.0 ? fmax / sums.mean_force : (fmax == 0 ? 0 : 1e300);
+        result.iterations        = it + 1;
+        const double fmax        = max_particle_norm(F);
+        result.relative_residual = sums.mean_force > 0.0
+                                     ? fmax / sums.mean_force
+                                     : (fmax == 0 ? 0 : 1e300);
         if (result.relative_residual <= target)
           break;
         // Force f = -F.

@@ -37,8 +37,8 @@ namespace compax::dem
           int                 max_iterations);
 
   private:
-    ContactAssembler    assembler;
-    BlockSparseMatrix   K;
-    Eigen::VectorXd     F, v, mass;
+    ContactAssembler  assembler;
+    BlockSparseMatrix K;
+    Eigen::VectorXd   F, v, mass;
   };
 } // namespace compax::dem

@@ -18,10 +18,11 @@ namespace compax::dem
   LoadStepper::LoadStepper(const ContactModel       &model,
                            const EquilibriumOptions  equilibrium,
                            const LoadSteppingOptions stepping)
-    : model(model)
-    , newton(equilibrium)
-    , stepping(stepping)
-  {}
+      : model(model)
+      , newton(equilibrium)
+      , stepping(stepping)
+  {
+  }
 
   namespace
   {
@@ -33,6 +34,8 @@ namespace compax::dem
       total.assembly_seconds += r.assembly_seconds;
       total.linear_seconds += r.linear_seconds;
       total.assemblies += r.assemblies;
+      total.fire_iterations += r.fire_iterations;
+      total.fire_seconds += r.fire_seconds;
       total.last = r;
     }
 
@@ -55,7 +58,7 @@ namespace compax::dem
   LoadStepResult
   LoadStepper::equilibrate(Bed &bed)
   {
-    LoadStepResult total;
+    LoadStepResult          total;
     const EquilibriumResult r = newton.solve(bed, model);
     accumulate(total, r);
     total.substeps  = 1;
@@ -71,21 +74,20 @@ namespace compax::dem
     LoadStepResult total;
     const DieWalls start = bed.walls;
     double         done  = 0.0;
-    fraction             = std::min(std::max(fraction, stepping.min_fraction),
-                        1.0);
+    fraction = std::min(std::max(fraction, stepping.min_fraction), 1.0);
     while (done < 1.0)
       {
-        const double t = std::min(1.0, done + fraction);
-        saved          = bed;
+        const double t      = std::min(1.0, done + fraction);
+        saved               = bed;
         const DieWalls next = t >= 1.0 ? target : interpolate(start, target, t);
         predict(bed.particles, bed.walls, next);
-        bed.walls = next;
+        bed.walls                 = next;
         const EquilibriumResult r = newton.solve(bed, model);
         accumulate(total, r);
         if (r.converged)
           {
-            const BondChanges b =
-              bed.contacts.update_histories(bed.particles, bed.walls);
+            const BondChanges b
+              = bed.contacts.update_histories(bed.particles, bed.walls);
             total.bonds.formed += b.formed;
             total.bonds.broken += b.broken;
             ++total.substeps;

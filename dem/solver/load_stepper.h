@@ -17,16 +17,18 @@ namespace compax::dem
   /// Outcome of one load step (possibly several sub-steps).
   struct LoadStepResult
   {
-    bool              converged  = false;
-    int               substeps   = 0;
-    int               cutbacks   = 0;
-    int               iterations = 0;
+    bool              converged     = false;
+    int               substeps      = 0;
+    int               cutbacks      = 0;
+    int               iterations    = 0;
     int               cg_iterations = 0;
     BondChanges       bonds;
     EquilibriumResult last;
     double            assembly_seconds = 0.0;
     double            linear_seconds   = 0.0;
     int               assemblies       = 0;
+    int               fire_iterations  = 0;
+    double            fire_seconds     = 0.0;
   };
 
   /**
@@ -40,9 +42,9 @@ namespace compax::dem
   class LoadStepper
   {
   public:
-    LoadStepper(const ContactModel   &model,
-                EquilibriumOptions    equilibrium = {},
-                LoadSteppingOptions   stepping    = {});
+    LoadStepper(const ContactModel &model,
+                EquilibriumOptions  equilibrium = {},
+                LoadSteppingOptions stepping    = {});
 
     /// Drives bed.walls to `target` (punch heights, die diameter and
     /// presence).

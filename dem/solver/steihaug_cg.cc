@@ -21,22 +21,22 @@ namespace compax::dem
         const double *b = K.block(K.diagonal_slot(i));
         trace_sum += std::abs(b[0]) + std::abs(b[4]) + std::abs(b[8]);
       }
-    scale_ = n > 0 && trace_sum > 0.0 ? trace_sum / (3.0 * n) : 1.0;
+    scale_             = n > 0 && trace_sum > 0.0 ? trace_sum / (3.0 * n) : 1.0;
     const double floor = relative_floor;
 
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
     for (std::size_t i = 0; i < n; ++i)
       {
-        const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>
-          b(K.block(K.diagonal_slot(i)));
+        const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> b(
+          K.block(K.diagonal_slot(i)));
         eig.computeDirect(b / scale_);
         Eigen::Vector3d lambda = eig.eigenvalues().cwiseAbs();
         for (int d = 0; d < 3; ++d)
           lambda[d] = std::max(lambda[d], floor);
-        const Eigen::Matrix3d &V = eig.eigenvectors();
+        const Eigen::Matrix3d &V  = eig.eigenvectors();
         const Eigen::Matrix3d  Mi = V * lambda.asDiagonal() * V.transpose();
-        const Eigen::Matrix3d  Mi_inv =
-          V * lambda.cwiseInverse().asDiagonal() * V.transpose();
+        const Eigen::Matrix3d  Mi_inv
+          = V * lambda.cwiseInverse().asDiagonal() * V.transpose();
         for (int r = 0; r < 3; ++r)
           for (int c = 0; c < 3; ++c)
             {
@@ -56,9 +56,9 @@ namespace compax::dem
       const std::size_t n = blocks.size() / 9;
       for (std::size_t i = 0; i < n; ++i)
         {
-          const double *a = blocks.data() + 9 * i;
-          const double *x = src.data() + 3 * i;
-          double       *y = dst.data() + 3 * i;
+          const double *a  = blocks.data() + 9 * i;
+          const double *x  = src.data() + 3 * i;
+          double       *y  = dst.data() + 3 * i;
           const double  x0 = x[0], x1 = x[1], x2 = x[2];
           y[0] = a[0] * x0 + a[1] * x1 + a[2] * x2;
           y[1] = a[3] * x0 + a[4] * x1 + a[5] * x2;
@@ -90,7 +90,7 @@ namespace compax::dem
     M.multiply(Ms, s);
     M.multiply(Mp, p);
     const double pp = p.dot(Mp), sp = s.dot(Mp), ss = s.dot(Ms);
-    const double c  = ss - radius * radius;
+    const double c = ss - radius * radius;
     if (pp <= 0.0)
       return 0.0;
     const double disc = std::sqrt(std::max(sp * sp - pp * c, 0.0));
@@ -98,7 +98,7 @@ namespace compax::dem
   }
 
   SteihaugResult
-  SteihaugCG::solve(const BlockSparseMatrix          &K,
+  SteihaugCG::solve(const BlockSparseMatrix         &K,
                     const BlockJacobiPreconditioner &M,
                     const Eigen::VectorXd           &g,
                     const double                     radius,
@@ -121,9 +121,9 @@ namespace compax::dem
     const double scale = M.scale();
     r                  = g / scale;
     M.solve(z, r);
-    p             = -z;
-    double rz     = r.dot(z);
-    const double rz0 = rz;
+    p                 = -z;
+    double       rz   = r.dot(z);
+    const double rz0  = rz;
     const double stop = relative_tolerance * relative_tolerance * rz0;
 
     if (rz0 > 0.0)
@@ -157,7 +157,7 @@ namespace compax::dem
           const double rz_new = r.dot(z);
           if (rz_new <= stop)
             break;
-          p = -z + (rz_new / rz) * p;
+          p  = -z + (rz_new / rz) * p;
           rz = rz_new;
         }
 

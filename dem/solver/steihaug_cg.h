@@ -49,9 +49,9 @@ namespace compax::dem
     /// Model decrease -(g.s + s.K s / 2) [J].
     double predicted_decrease = 0.0;
     /// M-norm of the step (M as scaled by the preconditioner) [m].
-    double step_norm = 0.0;
-    int    iterations = 0;
-    bool   on_boundary = false;
+    double step_norm          = 0.0;
+    int    iterations         = 0;
+    bool   on_boundary        = false;
     bool   negative_curvature = false;
   };
 
@@ -66,7 +66,7 @@ namespace compax::dem
   {
   public:
     SteihaugResult
-    solve(const BlockSparseMatrix          &K,
+    solve(const BlockSparseMatrix         &K,
           const BlockJacobiPreconditioner &M,
           const Eigen::VectorXd           &g,
           double                           radius,
@@ -79,8 +79,8 @@ namespace compax::dem
 
     /// Largest tau >= 0 with |s + tau p|_M = radius.
     double
-    to_boundary(const Eigen::VectorXd &s,
-                const Eigen::VectorXd &p,
+    to_boundary(const Eigen::VectorXd           &s,
+                const Eigen::VectorXd           &p,
                 const BlockJacobiPreconditioner &M,
                 double                           radius);
   };

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 namespace compax::dem
 {
@@ -30,19 +30,20 @@ namespace compax::dem
   }
 
   TrustRegionNewton::TrustRegionNewton(const EquilibriumOptions options)
-    : opts(options)
-  {}
+      : opts(options)
+  {
+  }
 
   EquilibriumResult
   TrustRegionNewton::solve(Bed &bed, const ContactModel &model)
   {
     EquilibriumResult result;
-    const double      R_mean = bed.particles.mean_radius();
+    const double      R_mean     = bed.particles.mean_radius();
     const double      max_radius = opts.max_radius * R_mean;
     if (radius <= 0.0)
       radius = opts.initial_radius * R_mean;
-    radius = std::clamp(radius, 1e-3 * opts.initial_radius * R_mean,
-                        max_radius);
+    radius
+      = std::clamp(radius, 1e-3 * opts.initial_radius * R_mean, max_radius);
 
     auto assemble = [&]() {
       const auto t0 = clock_type::now();
@@ -58,11 +59,11 @@ namespace compax::dem
     };
 
     assemble();
-    double       last_step  = 0.0;
-    bool         stepped    = false;
-    const double F0         = std::max(F.norm(), 1e-300);
-    double       best       = std::numeric_limits<double>::infinity();
-    int          best_at    = 0;
+    double       last_step = 0.0;
+    bool         stepped   = false;
+    const double F0        = std::max(F.norm(), 1e-300);
+    double       best      = std::numeric_limits<double>::infinity();
+    int          best_at   = 0;
     for (int it = 0;; ++it)
       {
         result.relative_residual = relative(F, result.sums);
@@ -74,34 +75,37 @@ namespace compax::dem
         if (it - best_at >= opts.stall_iterations && opts.fire_iterations > 0)
           {
             // Newton crawls: the bed is rearranging. Relax with FIRE.
-            const FireResult fr =
-              fire.relax(bed, model, 1e-2, opts.fire_iterations);
+            const auto       tf = clock_type::now();
+            const FireResult fr
+              = fire.relax(bed, model, 1e-2, opts.fire_iterations);
+            result.fire_seconds += seconds_since(tf);
             result.fire_iterations += fr.iterations;
             assemble();
             result.relative_residual = relative(F, result.sums);
-            best    = result.relative_residual;
-            best_at = it;
-            radius  = opts.initial_radius * R_mean;
-            stepped = false;
+            best                     = result.relative_residual;
+            best_at                  = it;
+            radius                   = opts.initial_radius * R_mean;
+            stepped                  = false;
           }
         const bool force_ok = result.relative_residual <= opts.force_tolerance;
-        const bool step_ok =
-          !stepped || last_step <= opts.step_tolerance * R_mean;
+        const bool step_ok
+          = !stepped || last_step <= opts.step_tolerance * R_mean;
         if (force_ok && step_ok)
           {
             result.converged = true;
             break;
           }
-        if (it >= opts.max_iterations || !std::isfinite(result.relative_residual))
+        if (it >= opts.max_iterations
+            || !std::isfinite(result.relative_residual))
           break;
 
         // Trust-region subproblem.
         const auto t0 = clock_type::now();
         M.compute(K);
-        const double eta =
-          std::min(0.5, std::sqrt(F.norm() / F0)) * (force_ok ? 0.1 : 1.0);
-        const SteihaugResult sub =
-          cg.solve(K, M, F, radius, eta, opts.max_cg_iterations, s);
+        const double eta
+          = std::min(0.5, std::sqrt(F.norm() / F0)) * (force_ok ? 0.1 : 1.0);
+        const SteihaugResult sub
+          = cg.solve(K, M, F, radius, eta, opts.max_cg_iterations, s);
         result.linear_seconds += seconds_since(t0);
         result.cg_iterations += sub.iterations;
         ++result.iterations;
@@ -158,8 +162,8 @@ namespace compax::dem
         else
           {
             ++result.rejected_steps;
-            x = x_old;
-            F = F_old;
+            x           = x_old;
+            F           = F_old;
             result.sums = old_sums;
             assemble(); // K at x_old (the contact list may have changed)
             if (radius < 1e-12 * R_mean)

@@ -37,18 +37,19 @@ namespace compax::dem
   /// Outcome of one equilibrium solve.
   struct EquilibriumResult
   {
-    bool        converged       = false;
-    int         iterations      = 0;
-    int         cg_iterations   = 0;
-    int         rejected_steps  = 0;
+    bool converged      = false;
+    int  iterations     = 0;
+    int  cg_iterations  = 0;
+    int  rejected_steps = 0;
     /// max_i |F_i| / mean contact force at the end [-].
     double      relative_residual = 0.0;
     ContactSums sums;
     /// Time spent assembling F and K and in the linear solves [s].
-    double      assembly_seconds = 0.0;
-    double      linear_seconds   = 0.0;
-    int         assemblies       = 0;
-    int         fire_iterations  = 0;
+    double assembly_seconds = 0.0;
+    double linear_seconds   = 0.0;
+    int    assemblies       = 0;
+    int    fire_iterations  = 0;
+    double fire_seconds     = 0.0;
   };
 
   /**

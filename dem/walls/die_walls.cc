@@ -43,7 +43,7 @@ namespace compax::dem
           break;
         case Wall::die:
           {
-            const double r = std::hypot(x[0], x[1]);
+            const double r  = std::hypot(x[0], x[1]);
             g.axis_distance = r;
             g.overlap       = die_present ? R + r - radius() : -R;
             if (r > 0.0)

@@ -45,7 +45,7 @@ TEST(NeighborsContactSet, HistorySurvivesRebuildsAndSeparation)
   walls.upper_punch = 1.0;
   const ContactModel model(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
                            1.26e6);
-  ContactSet set(30e-6);
+  ContactSet         set(30e-6);
   set.rebuild(p, walls, model);
   ASSERT_GT(set.pairs.size(), 10u);
   // Mark every pair's history with its indices.
@@ -75,7 +75,7 @@ TEST(NeighborsContactSet, HistorySurvivesRebuildsAndSeparation)
     }
   EXPECT_TRUE(kept_separated);
   // Every current neighbour pair is in the list.
-  const auto reference = brute_force_pairs(p.positions, p.radii, 30e-6);
+  const auto  reference = brute_force_pairs(p.positions, p.radii, 30e-6);
   std::size_t found     = 0;
   for (const auto &c : set.pairs)
     found += std::binary_search(reference.begin(),

@@ -25,7 +25,8 @@ namespace
         if (p.positions[i][2] <= R * (1 + 1e-6))
           ++supports[i];
       }
-    for (const auto &[i, j] : brute_force_pairs(p.positions, p.radii, 1e-6 * 220e-6))
+    for (const auto &[i, j] :
+         brute_force_pairs(p.positions, p.radii, 1e-6 * 220e-6))
       {
         const double s = p.radii[i] + p.radii[j];
         const double d = (p.positions[i] - p.positions[j]).norm();
@@ -44,9 +45,9 @@ namespace
 TEST(PackingBallistic, MonodisperseRestsInsideDieWithoutOverlap)
 {
   DepositionParameters prm;
-  prm.n_particles  = 400;
-  prm.die_diameter = 4e-3;
-  prm.seed         = 5;
+  prm.n_particles        = 400;
+  prm.die_diameter       = 4e-3;
+  prm.seed               = 5;
   const ParticleSystem p = ballistic_deposition(prm);
   ASSERT_EQ(p.size(), 400u);
   check_packing(p, prm.die_diameter);
@@ -56,9 +57,9 @@ TEST(PackingBallistic, MonodisperseRestsInsideDieWithoutOverlap)
   double z_max = 0;
   for (std::size_t i = 0; i < p.size(); ++i)
     z_max = std::max(z_max, p.positions[i][2] + p.radii[i]);
-  const double rho = p.solid_volume()
-                     / (3.14159265358979 * 0.25 * prm.die_diameter
-                        * prm.die_diameter * z_max);
+  const double rho
+    = p.solid_volume()
+      / (3.14159265358979 * 0.25 * prm.die_diameter * prm.die_diameter * z_max);
   EXPECT_GT(rho, 0.40);
   EXPECT_LT(rho, 0.64);
 }
@@ -66,15 +67,15 @@ TEST(PackingBallistic, MonodisperseRestsInsideDieWithoutOverlap)
 TEST(PackingBallistic, LogNormalWithCutOffsAndTwoMaterials)
 {
   DepositionParameters prm;
-  prm.n_particles          = 300;
-  prm.die_diameter         = 4e-3;
-  prm.sizes.median_radius  = 150e-6;
-  prm.sizes.log_sigma      = 0.3;
-  prm.sizes.min_radius     = 100e-6;
-  prm.sizes.max_radius     = 220e-6;
-  prm.material_fractions   = {0.5, 0.5};
-  prm.seed                 = 9;
-  const ParticleSystem p   = ballistic_deposition(prm);
+  prm.n_particles         = 300;
+  prm.die_diameter        = 4e-3;
+  prm.sizes.median_radius = 150e-6;
+  prm.sizes.log_sigma     = 0.3;
+  prm.sizes.min_radius    = 100e-6;
+  prm.sizes.max_radius    = 220e-6;
+  prm.material_fractions  = {0.5, 0.5};
+  prm.seed                = 9;
+  const ParticleSystem p  = ballistic_deposition(prm);
   check_packing(p, prm.die_diameter);
   int n1 = 0;
   for (std::size_t i = 0; i < p.size(); ++i)
@@ -90,8 +91,8 @@ TEST(PackingBallistic, LogNormalWithCutOffsAndTwoMaterials)
 TEST(PackingBallistic, SameSeedSamePacking)
 {
   DepositionParameters prm;
-  prm.n_particles = 150;
-  prm.seed        = 77;
+  prm.n_particles        = 150;
+  prm.seed               = 77;
   const ParticleSystem a = ballistic_deposition(prm);
   const ParticleSystem b = ballistic_deposition(prm);
   EXPECT_EQ(a.positions, b.positions);

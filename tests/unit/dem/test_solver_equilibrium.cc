@@ -38,7 +38,7 @@ namespace
     }
   };
   const PlasticLaw sphere_flat{R, kappa};
-  const PlasticLaw sphere_sphere{R / 2, kappa * std::pow(2.0, -1.0 / m)};
+  const PlasticLaw sphere_sphere{R / 2, kappa *std::pow(2.0, -1.0 / m)};
 
   ContactModel
   material1()
@@ -84,9 +84,9 @@ TEST(SolverEquilibrium, SphereBetweenPunches)
   // P = 2 n_p/pi a_p^{2+1/m} (asin x - x sqrt(1-x^2)), x = a/a_p,
   // a^2 = a_p^2 - (4 E* (gamma_p - gamma)/(3 n_p a_p^{1/m}))^2, E* of a
   // sphere on a rigid flat E/(1-nu^2).
-  const double c2    = 1.43 * std::exp(-0.97 / m);
-  const double n_p   = pi * 3.0 * std::pow(6.0, -1.0 / m) * std::pow(R, -1.0 / m)
-                     * kappa;
+  const double c2 = 1.43 * std::exp(-0.97 / m);
+  const double n_p
+    = pi * 3.0 * std::pow(6.0, -1.0 / m) * std::pow(R, -1.0 / m) * kappa;
   const double a_p   = std::sqrt(2 * c2 * R * delta / 2);
   const double E_eff = E / (1 - nu * nu);
   const double du    = 0.2 * 3 * n_p * std::pow(a_p, 1 + 1 / m) / (4 * E_eff);
@@ -110,8 +110,8 @@ TEST(SolverEquilibrium, SpheresPressedAgainstDieWall)
   const ContactModel model = material1();
   Bed                bed;
   const double       total = 0.08 * R, gamma_z = 0.02 * R;
-  bed.walls.diameter       = 4 * R - total;
-  bed.walls.upper_punch    = 2 * R - 2 * gamma_z;
+  bed.walls.diameter    = 4 * R - total;
+  bed.walls.upper_punch = 2 * R - 2 * gamma_z;
   bed.contacts.set_skin(0.3 * R);
   bed.particles.add({-R + 0.03 * R, 0.0, R}, R);
   bed.particles.add({R, 0.01 * R, R - 0.01 * R}, R);
@@ -123,8 +123,8 @@ TEST(SolverEquilibrium, SpheresPressedAgainstDieWall)
   for (int i = 0; i < 200; ++i)
     {
       const double P = 0.5 * (lo + hi);
-      (2 * sphere_flat.overlap(P) + sphere_sphere.overlap(P) < total ? lo : hi) =
-        P;
+      (2 * sphere_flat.overlap(P) + sphere_sphere.overlap(P) < total ? lo : hi)
+        = P;
     }
   const double P = 0.5 * (lo + hi);
   ContactSums  sums;
@@ -133,8 +133,8 @@ TEST(SolverEquilibrium, SpheresPressedAgainstDieWall)
   const double Pz = sphere_flat.force(gamma_z);
   EXPECT_NEAR(sums.wall_force[int(Wall::upper_punch)], 2 * Pz, 1e-7 * Pz);
   EXPECT_NEAR(sums.wall_force[int(Wall::lower_punch)], 2 * Pz, 1e-7 * Pz);
-  const double d =
-    (bed.particles.positions[0] - bed.particles.positions[1]).norm();
+  const double d
+    = (bed.particles.positions[0] - bed.particles.positions[1]).norm();
   EXPECT_NEAR(d, 2 * R - sphere_sphere.overlap(P), 1e-9 * R);
 }
 
@@ -170,9 +170,10 @@ TEST(SolverEquilibrium, SimpleCubicColumnAndRattler)
         {
           const double P = 0.5 * (lo + hi);
           (2 * sphere_flat.overlap(P) + (N - 1) * sphere_sphere.overlap(P)
-               < total ?
-             lo :
-             hi) = P;
+               < total
+             ? lo
+             : hi)
+            = P;
         }
       const double P = 0.5 * (lo + hi);
       ContactSums  sums;
@@ -184,8 +185,9 @@ TEST(SolverEquilibrium, SimpleCubicColumnAndRattler)
                   1e-9 * R);
       // The rattler carries no force and keeps where the affine predictor
       // of the punch motion put it.
-      const Eigen::Vector3d moved(
-        rattler[0], rattler[1], rattler[2] * w.height() / (2 * R * N));
+      const Eigen::Vector3d moved(rattler[0],
+                                  rattler[1],
+                                  rattler[2] * w.height() / (2 * R * N));
       EXPECT_LT((bed.particles.positions[N] - moved).norm(), 1e-12 * R);
     }
 }

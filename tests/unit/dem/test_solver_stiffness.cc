@@ -20,7 +20,7 @@ TEST(SolverStiffness, EqualsCentralDifferenceOfResidual)
   // Spacing 0.94 (2R): every face neighbour overlaps by 0.045R..0.2R, far
   // from the onset of contact where P'' is unbounded; the corner
   // particles press into the die wall, the layers into the punches.
-  const double a = 2 * R * 0.94;
+  const double a        = 2 * R * 0.94;
   bed.walls.diameter    = 2 * (std::sqrt(2.0) * a + R - 0.05 * R);
   bed.walls.lower_punch = 0.0;
   bed.walls.upper_punch = a + 2 * R * 0.94;
@@ -54,8 +54,8 @@ TEST(SolverStiffness, EqualsCentralDifferenceOfResidual)
       double a_p = c.law.plastic_radius(gamma);
       for (int it = 0; it < 50; ++it)
         {
-          const double drop =
-            c.law.plastic_overlap(a_p) - c.law.breakage_overlap(a_p);
+          const double drop
+            = c.law.plastic_overlap(a_p) - c.law.breakage_overlap(a_p);
           a_p = c.law.plastic_radius(gamma + 0.3 * drop);
         }
       c.history.a_p = a_p;
@@ -63,8 +63,8 @@ TEST(SolverStiffness, EqualsCentralDifferenceOfResidual)
       ++n_unloading;
     }
   for (const auto &c : bed.contacts.walls)
-    n_wall += bed.walls.gap(c.wall, bed.particles.positions[c.i], R).overlap
-              > 0.0;
+    n_wall
+      += bed.walls.gap(c.wall, bed.particles.positions[c.i], R).overlap > 0.0;
   ASSERT_GE(n_loading, 3);
   ASSERT_GE(n_unloading, 3);
   ASSERT_GE(n_wall, 3);
@@ -86,8 +86,8 @@ TEST(SolverStiffness, EqualsCentralDifferenceOfResidual)
       assembler.residual(bed, model, Fp);
       x[k] = x0 - h;
       assembler.residual(bed, model, Fm);
-      x[k]        = x0;
-      fd.col(k)   = (Fp - Fm) / (2 * h);
+      x[k]      = x0;
+      fd.col(k) = (Fp - Fm) / (2 * h);
     }
   for (Eigen::Index k = 0; k < x.size(); ++k)
     EXPECT_LT((Kd.col(k) - fd.col(k)).norm(), 1e-6 * Kd.col(k).norm())

@@ -1,9 +1,8 @@
-// MPI initialisation (for deal.II and the openmpi-flavoured HDF5) for the
-// whole test binary. The executable's main comes from GTest::gtest_main, so a
-// global Environment registered by a static object does it: gtest runs SetUp()
-// before the first test and TearDown() after the last, and never for
-// --gtest_list_tests, so test discovery starts no MPI. Each ctest process is a
-// singleton MPI run.
+// MPI (and p4est/Trilinos/HDF5) initialisation for a whole test binary. The
+// executable's main comes from GTest::gtest_main, so a global Environment
+// registered by a static object does it: gtest runs SetUp() before the first
+// test and TearDown() after the last, and never for --gtest_list_tests, so
+// test discovery starts no MPI. Each ctest process is a singleton MPI run.
 #include <deal.II/base/mpi.h>
 
 #include <gtest/gtest.h>
@@ -19,7 +18,7 @@ namespace
     SetUp() override
     {
       static int    argc   = 1;
-      static char   name[] = "compax_coupling_tests";
+      static char   name[] = "compax_tests";
       static char  *args[] = {name, nullptr};
       static char **argv   = args;
       mpi = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(

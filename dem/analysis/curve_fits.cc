@@ -1,0 +1,244 @@
+#include "dem/analysis/curve_fits.h"
+
+#include <Eigen/Dense>
+#include <unsupported/Eigen/NonLinearOptimization>
+#include <unsupported/Eigen/NumericalDiff>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+
+namespace compax::dem
+{
+  namespace
+  {
+    using Model = std::function<double(const Eigen::VectorXd &, double)>;
+
+    /// Residuals model(p, x_i) - y_i for Eigen's Levenberg-Marquardt.
+    struct Residuals
+    {
+      using Scalar       = double;
+      using InputType    = Eigen::VectorXd;
+      using ValueType    = Eigen::VectorXd;
+      using JacobianType = Eigen::MatrixXd;
+      enum
+      {
+        InputsAtCompileTime = Eigen::Dynamic,
+        ValuesAtCompileTime = Eigen::Dynamic
+      };
+
+      Model                      model;
+      const std::vector<double> *x;
+      const std::vector<double> *y;
+      int                        n_parameters;
+
+      int
+      inputs() const
+      {
+        return n_parameters;
+      }
+
+      int
+      values() const
+      {
+        return static_cast<int>(x->size());
+      }
+
+      int
+      operator()(const Eigen::VectorXd &p, Eigen::VectorXd &r) const
+      {
+        for (std::size_t i = 0; i < x->size(); ++i)
+          r[i] = model(p, (*x)[i]) - (*y)[i];
+        return 0;
+      }
+    };
+
+    /// Refines p in place; returns the rms residual.
+    double
+    levenberg_marquardt(const Model               &model,
+                        Eigen::VectorXd           &p,
+                        const std::vector<double> &x,
+                        const std::vector<double> &y)
+    {
+      Residuals                        residuals{model, &x, &y, int(p.size())};
+      Eigen::NumericalDiff<Residuals>  with_jacobian(residuals);
+      Eigen::LevenbergMarquardt<Eigen::NumericalDiff<Residuals>> solver(
+        with_jacobian);
+      solver.parameters.xtol   = 1e-14;
+      solver.parameters.ftol   = 1e-14;
+      solver.parameters.maxfev = 4000;
+      solver.minimize(p);
+      Eigen::VectorXd r(x.size());
+      residuals(p, r);
+      return std::sqrt(r.squaredNorm() / x.size());
+    }
+
+    void
+    check_sizes(const std::vector<double> &x,
+                const std::vector<double> &y,
+                std::size_t                minimum)
+    {
+      if (x.size() != y.size() || x.size() < minimum)
+        throw std::invalid_argument(
+          "curve fit: needs at least " + std::to_string(minimum)
+          + " points with matching abscissae and values");
+    }
+
+    /// Least squares of y = a + b t; returns {a, b}.
+    std::pair<double, double>
+    straight_line(const std::vector<double> &t, const std::vector<double> &y)
+    {
+      Eigen::MatrixXd A(t.size(), 2);
+      Eigen::VectorXd b(t.size());
+      for (std::size_t i = 0; i < t.size(); ++i)
+        {
+          A(i, 0) = 1.0;
+          A(i, 1) = t[i];
+          b[i]    = y[i];
+        }
+      const Eigen::Vector2d c = A.colPivHouseholderQr().solve(b);
+      return {c[0], c[1]};
+    }
+
+    double
+    smallest(const std::vector<double> &v)
+    {
+      return *std::min_element(v.begin(), v.end());
+    }
+  } // namespace
+
+  CoordinationFit
+  fit_coordination(const std::vector<double> &rho, const std::vector<double> &Z)
+  {
+    check_sizes(rho, Z, 5);
+    const double rho_min = smallest(rho);
+    // rho_c = rho_min - exp(s) keeps the base of the power positive.
+    const Model model = [rho_min](const Eigen::VectorXd &p, double r) {
+      return p[0]
+             + p[1] * std::pow(r - (rho_min - std::exp(p[2])), std::exp(p[3]));
+    };
+    // Variable projection on a grid of (rho_c, theta): the model is linear
+    // in (Z_c, Z_0) there.
+    Eigen::VectorXd best(4);
+    double          best_rms = std::numeric_limits<double>::infinity();
+    for (double gap = 1e-4; gap < 0.3; gap *= 1.5)
+      for (double theta = 0.1; theta < 2.0; theta += 0.05)
+        {
+          std::vector<double> t(rho.size());
+          for (std::size_t i = 0; i < rho.size(); ++i)
+            t[i] = std::pow(rho[i] - rho_min + gap, theta);
+          const auto [a, b] = straight_line(t, Z);
+          Eigen::VectorXd p(4);
+          p << a, b, std::log(gap), std::log(theta);
+          Eigen::VectorXd r(rho.size());
+          Residuals{model, &rho, &Z, 4}(p, r);
+          const double rms = std::sqrt(r.squaredNorm() / rho.size());
+          if (rms < best_rms)
+            {
+              best_rms = rms;
+              best     = p;
+            }
+        }
+    const double rms = levenberg_marquardt(model, best, rho, Z);
+    return {best[0],
+            best[1],
+            rho_min - std::exp(best[2]),
+            std::exp(best[3]),
+            rms};
+  }
+
+  PunchPressureFit
+  fit_punch_pressure(const std::vector<double> &rho,
+                     const std::vector<double> &pressure,
+                     const double               rho_c)
+  {
+    check_sizes(rho, pressure, 2);
+    std::vector<double> log_x, log_y;
+    for (std::size_t i = 0; i < rho.size(); ++i)
+      if (rho[i] > rho_c && pressure[i] > 0)
+        {
+          log_x.push_back(std::log(rho[i] - rho_c));
+          log_y.push_back(std::log(pressure[i]));
+        }
+    check_sizes(log_x, log_y, 2);
+    const auto [a, b] = straight_line(log_x, log_y);
+    const Model model = [rho_c](const Eigen::VectorXd &p, double r) {
+      return std::exp(p[0]) * std::pow(std::max(r - rho_c, 0.0), p[1]);
+    };
+    Eigen::VectorXd p(2);
+    p << a, b;
+    const double rms = levenberg_marquardt(model, p, rho, pressure);
+    return {std::exp(p[0]), p[1], rms};
+  }
+
+  LinearCriticalFit
+  fit_linear_critical(const std::vector<double> &rho,
+                      const std::vector<double> &y)
+  {
+    check_sizes(rho, y, 2);
+    const auto [a, b] = straight_line(rho, y);
+    double     sum    = 0;
+    for (std::size_t i = 0; i < rho.size(); ++i)
+      sum += std::pow(a + b * rho[i] - y[i], 2);
+    return {a + b, -a / b, std::sqrt(sum / rho.size())};
+  }
+
+  LinearCriticalFit
+  fit_residual_pressure(const std::vector<double> &rho,
+                        const std::vector<double> &pressure)
+  {
+    check_sizes(rho, pressure, 2);
+    // sigma = c2 rho^2 + c1 rho with c2 = s0/(1-rc), c1 = -s0 rc/(1-rc).
+    Eigen::MatrixXd A(rho.size(), 2);
+    Eigen::VectorXd b(rho.size());
+    for (std::size_t i = 0; i < rho.size(); ++i)
+      {
+        A(i, 0) = rho[i] * rho[i];
+        A(i, 1) = rho[i];
+        b[i]    = pressure[i];
+      }
+    const Eigen::Vector2d c     = A.colPivHouseholderQr().solve(b);
+    const double          rho_c = -c[1] / c[0];
+    return {c[0] * (1 - rho_c),
+            rho_c,
+            std::sqrt((A * c - b).squaredNorm() / rho.size())};
+  }
+
+  PhaniNiyogiFit
+  fit_phani_niyogi(const std::vector<double> &rho, const std::vector<double> &E)
+  {
+    check_sizes(rho, E, 3);
+    const double rho_min = smallest(rho);
+    const Model  model   = [rho_min](const Eigen::VectorXd &p, double r) {
+      const double rho_c = rho_min - std::exp(p[2]);
+      return std::exp(p[0]) * std::pow((r - rho_c) / (1 - rho_c), p[1]);
+    };
+    Eigen::VectorXd best(3);
+    double          best_rms = std::numeric_limits<double>::infinity();
+    for (double gap = 1e-4; gap < 0.5; gap *= 1.3)
+      {
+        const double        rho_c = rho_min - gap;
+        std::vector<double> log_x(rho.size()), log_y(rho.size());
+        for (std::size_t i = 0; i < rho.size(); ++i)
+          {
+            log_x[i] = std::log((rho[i] - rho_c) / (1 - rho_c));
+            log_y[i] = std::log(std::max(E[i], 1e-300));
+          }
+        const auto [a, b] = straight_line(log_x, log_y);
+        Eigen::VectorXd p(3);
+        p << a, b, std::log(gap);
+        Eigen::VectorXd r(rho.size());
+        Residuals{model, &rho, &E, 3}(p, r);
+        const double rms = std::sqrt(r.squaredNorm() / rho.size());
+        if (rms < best_rms)
+          {
+            best_rms = rms;
+            best     = p;
+          }
+      }
+    const double rms = levenberg_marquardt(model, best, rho, E);
+    return {std::exp(best[0]), best[1], rho_min - std::exp(best[2]), rms};
+  }
+} // namespace compax::dem
