@@ -48,9 +48,8 @@ namespace compax::cli
              "Commands:\n";
       for (const auto &command : commands)
         out << "  " << command->name()
-            << std::string(12 - std::min<std::size_t>(
-                                  11, command->name().size()),
-                           ' ')
+            << std::string(
+                 12 - std::min<std::size_t>(11, command->name().size()), ' ')
             << command->summary() << '\n';
       out << "\nExit codes: 0 success, 1 internal error, 2 bad input (no "
              "output written),\n3 solver did not converge (last good state "
@@ -82,8 +81,8 @@ namespace compax::cli
                              + " --help')");
           else if (call.parameter_file)
             throw InputError("only one parameter file may be given; got '"
-                             + call.parameter_file->string() + "' and '"
-                             + word + "'");
+                             + call.parameter_file->string() + "' and '" + word
+                             + "'");
           else
             call.parameter_file = word;
         }
@@ -100,10 +99,10 @@ namespace compax::cli
 
       if (call.help)
         {
-          std::cout << "compax " << command.name() << " - "
-                    << command.summary() << "\n\n"
-                    << command.description()
-                    << "\n\nUsage: compax " << command.name()
+          std::cout << "compax " << command.name() << " - " << command.summary()
+                    << "\n\n"
+                    << command.description() << "\n\nUsage: compax "
+                    << command.name()
                     << " [file.prm] [-o OUTDIR] | --print-parameters | "
                        "--help\nDefault OUTDIR: "
                     << command.name()
@@ -114,9 +113,10 @@ namespace compax::cli
         }
       if (call.print_parameters)
         {
-          prm.print_parameters(std::cout,
-                               dealii::ParameterHandler::PRM
-                                 | dealii::ParameterHandler::KeepDeclarationOrder);
+          prm.print_parameters(
+            std::cout,
+            dealii::ParameterHandler::PRM
+              | dealii::ParameterHandler::KeepDeclarationOrder);
           return success;
         }
 
@@ -127,9 +127,10 @@ namespace compax::cli
       OutputDirectory output(call.output.value_or(command.name() + "-output"));
       std::ofstream(output.staging() / "parameters.prm") << [&] {
         std::ostringstream used;
-        prm.print_parameters(used,
-                             dealii::ParameterHandler::ShortPRM
-                               | dealii::ParameterHandler::KeepDeclarationOrder);
+        prm.print_parameters(
+          used,
+          dealii::ParameterHandler::ShortPRM
+            | dealii::ParameterHandler::KeepDeclarationOrder);
         return used.str();
       }();
 
@@ -154,7 +155,7 @@ namespace compax::cli
   int
   run_application(const int argc, char **argv)
   {
-    const auto commands = all_commands();
+    const auto               commands = all_commands();
     std::vector<std::string> words(argv + 1, argv + argc);
     std::string              context = "compax";
     try

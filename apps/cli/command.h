@@ -43,11 +43,12 @@ namespace compax::cli
      */
     virtual void
     check_parameters(dealii::ParameterHandler &) const
-    {}
+    {
+    }
 
     /// Runs the study; returns an ExitCode.
     virtual int
-    run(dealii::ParameterHandler &prm,
-        const std::filesystem::path    &output_directory) const = 0;
+    run(dealii::ParameterHandler    &prm,
+        const std::filesystem::path &output_directory) const = 0;
   };
 } // namespace compax::cli

@@ -8,9 +8,9 @@
 namespace compax::cli
 {
   OutputDirectory::OutputDirectory(std::filesystem::path path)
-    : final_path(std::move(path))
+      : final_path(std::move(path))
   {
-    namespace fs = std::filesystem;
+    namespace fs            = std::filesystem;
     const fs::path absolute = fs::absolute(final_path).lexically_normal();
     fs::path       parent   = absolute.parent_path();
     std::string    name     = absolute.filename().string();
@@ -25,8 +25,8 @@ namespace compax::cli
       throw InputError("output folder '" + final_path.string()
                        + "': cannot create its parent folder ("
                        + error.message() + ")");
-    staging_path =
-      parent / ("." + name + ".partial-" + std::to_string(::getpid()));
+    staging_path
+      = parent / ("." + name + ".partial-" + std::to_string(::getpid()));
     fs::remove_all(staging_path, error);
     fs::create_directory(staging_path, error);
     if (error)

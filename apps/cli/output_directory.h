@@ -18,7 +18,8 @@ namespace compax::cli
 
     OutputDirectory(const OutputDirectory &) = delete;
     OutputDirectory &
-    operator=(const OutputDirectory &) = delete;
+    operator=(const OutputDirectory &)
+      = delete;
 
     /// Where the run writes while it is in progress.
     const std::filesystem::path &

@@ -46,11 +46,12 @@ namespace compax::cli
                              const bool   lower_open,
                              const double upper,
                              const bool   upper_open)
-    : lower(lower)
-    , upper(upper)
-    , lower_open(lower_open)
-    , upper_open(upper_open)
-  {}
+      : lower(lower)
+      , upper(upper)
+      , lower_open(lower_open)
+      , upper_open(upper_open)
+  {
+  }
 
   bool
   RealInterval::match(const std::string &text) const

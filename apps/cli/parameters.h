@@ -58,12 +58,12 @@ namespace compax::cli
    * "Young's modulus E of the particle material.").
    */
   void
-  declare_quantity(dealii::ParameterHandler             &prm,
-                   const std::string                    &name,
-                   const std::string                    &default_value,
+  declare_quantity(dealii::ParameterHandler            &prm,
+                   const std::string                   &name,
+                   const std::string                   &default_value,
                    const dealii::Patterns::PatternBase &pattern,
-                   const std::string                    &unit,
-                   const std::string                    &documentation);
+                   const std::string                   &unit,
+                   const std::string                   &documentation);
 
   /**
    * Parses a .prm file into prm. A missing file, an unknown entry, a

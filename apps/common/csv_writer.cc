@@ -7,8 +7,8 @@ namespace compax::cli
 {
   CsvWriter::CsvWriter(const std::filesystem::path &file,
                        std::vector<std::string>     columns)
-    : out(file)
-    , header(std::move(columns))
+      : out(file)
+      , header(std::move(columns))
   {
     if (!out)
       throw std::runtime_error("cannot write '" + file.string() + "'");

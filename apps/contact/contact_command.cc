@@ -23,12 +23,12 @@ namespace compax::cli
     /// Extremes of a force history, as printed at the end of a run.
     struct ForceSummary
     {
-      double peak_force          = 0.0;
-      double peak_gamma          = 0.0;
-      double pull_off_force      = 0.0;
-      double pull_off_gamma      = std::numeric_limits<double>::quiet_NaN();
-      double pull_off_radius     = 0.0;
-      double breakage_gamma      = std::numeric_limits<double>::quiet_NaN();
+      double peak_force      = 0.0;
+      double peak_gamma      = 0.0;
+      double pull_off_force  = 0.0;
+      double pull_off_gamma  = std::numeric_limits<double>::quiet_NaN();
+      double pull_off_radius = 0.0;
+      double breakage_gamma  = std::numeric_limits<double>::quiet_NaN();
     };
 
     class ContactCommand : public Command
@@ -82,28 +82,28 @@ namespace compax::cli
       }
 
       int
-      run(dealii::ParameterHandler &prm,
-          const std::filesystem::path    &folder) const override
+      run(dealii::ParameterHandler    &prm,
+          const std::filesystem::path &folder) const override
       {
-        const ContactPair          pair = make_contact_pair(prm);
-        const std::vector<double>  path = get_overlap_path(prm);
-        CsvWriter                  csv(folder / "contact.csv",
+        const ContactPair         pair = make_contact_pair(prm);
+        const std::vector<double> path = get_overlap_path(prm);
+        CsvWriter                 csv(folder / "contact.csv",
                       {"step",
-                       "gamma",
-                       "force",
-                       "contact_radius",
-                       "a_p",
-                       "a_B",
-                       "stiffness"});
-        ForceSummary               summary;
-        dem::ContactHistory        history;
+                                       "gamma",
+                                       "force",
+                                       "contact_radius",
+                                       "a_p",
+                                       "a_B",
+                                       "stiffness"});
+        ForceSummary              summary;
+        dem::ContactHistory       history;
         for (std::size_t step = 0; step < path.size(); ++step)
           {
             const double gamma   = path[step];
             const auto   context = pair.context(gamma);
             const auto   r       = pair.law->evaluate(gamma, history, context);
-            const auto   next =
-              pair.law->updated_history(gamma, history, context);
+            const auto   next
+              = pair.law->updated_history(gamma, history, context);
             if (history.a_B > 0.0 && next.a_B == 0.0
                 && std::isnan(summary.breakage_gamma))
               summary.breakage_gamma = gamma;
@@ -140,8 +140,8 @@ namespace compax::cli
                     const ForceSummary &s,
                     const double        gamma_max)
       {
-        std::cout << "Contact law " << pair.law->name() << " ("
-                  << pair.geometry << ")\n"
+        std::cout << "Contact law " << pair.law->name() << " (" << pair.geometry
+                  << ")\n"
                   << "  peak compressive force   " << s.peak_force
                   << " N at gamma = " << s.peak_gamma << " m\n";
         if (s.pull_off_force < 0.0)

@@ -32,6 +32,21 @@ namespace compax::cli
       return body;
     }
 
+    /// A law built from the radii and elastic constants of the two bodies,
+    /// plus any law-specific arguments.
+    template <typename Law, typename... Extra>
+    std::unique_ptr<Law>
+    elastic_law(const Body &body1, const Body &body2, const Extra &...extra)
+    {
+      return std::make_unique<Law>(Law::for_pair(body1.radius,
+                                                 body1.material.youngs_modulus,
+                                                 body1.material.poisson_ratio,
+                                                 body2.radius,
+                                                 body2.material.youngs_modulus,
+                                                 body2.material.poisson_ratio,
+                                                 extra...));
+    }
+
     std::string
     format(const std::string &label, const double value, const char *unit)
     {
@@ -47,17 +62,15 @@ namespace compax::cli
                      const bool                wall)
     {
       if (!wall
-          && body1.material.plastic_exponent
-               != body2.material.plastic_exponent)
+          && body1.material.plastic_exponent != body2.material.plastic_exponent)
         reject_entry("Particle 2/Plastic exponent",
                      std::to_string(body2.material.plastic_exponent),
                      "the bonded elasto-plastic law needs the same plastic "
                      "exponent m for both particles (Particle 1 has "
-                       + std::to_string(body1.material.plastic_exponent)
-                       + ")");
+                       + std::to_string(body1.material.plastic_exponent) + ")");
       prm.enter_subsection("Bonding");
-      const bool from_energies =
-        prm.get_bool("Fracture toughness from energies");
+      const bool from_energies
+        = prm.get_bool("Fracture toughness from energies");
       double toughness = prm.get_double("Fracture toughness");
       if (from_energies)
         toughness = dem::fracture_toughness_from_energies(
@@ -84,7 +97,9 @@ namespace compax::cli
         const double a_p = bonded->plastic_radius(gamma_max);
         return std::vector<std::string>{
           format("fracture toughness K_Ic  ", toughness, "Pa m^1/2"),
-          format("plastic radius a_p       ", a_p, "m (at the largest overlap)"),
+          format("plastic radius a_p       ",
+                 a_p,
+                 "m (at the largest overlap)"),
           format("closed-form breakage     ",
                  bonded->breakage_overlap(a_p),
                  "m (gamma_p - 3 n_p a_p^(1+1/m) / 4E, Gonzalez 2018 Sec. 3)"),
@@ -103,25 +118,19 @@ namespace compax::cli
     make_nonlocal_pair(const Body &body1, const Body &body2)
     {
       ContactPair pair;
-      pair.law = std::make_unique<dem::NonlocalHertzLaw>(
-        dem::NonlocalHertzLaw::for_pair(body1.radius,
-                                        body1.material.youngs_modulus,
-                                        body1.material.poisson_ratio,
-                                        body2.radius,
-                                        body2.material.youngs_modulus,
-                                        body2.material.poisson_ratio));
+      pair.law     = elastic_law<dem::NonlocalHertzLaw>(body1, body2);
       pair.context = [body1, body2](const double gamma) {
         dem::ContactContext context;
         if (gamma > 0.0)
-          context.nonlocal_overlap =
-            dem::solve_tatara_two_spheres(gamma,
-                                          body1.radius,
-                                          body1.material.youngs_modulus,
-                                          body1.material.poisson_ratio,
-                                          body2.radius,
-                                          body2.material.youngs_modulus,
-                                          body2.material.poisson_ratio)
-              .nonlocal_overlap;
+          context.nonlocal_overlap
+            = dem::solve_tatara_two_spheres(gamma,
+                                            body1.radius,
+                                            body1.material.youngs_modulus,
+                                            body1.material.poisson_ratio,
+                                            body2.radius,
+                                            body2.material.youngs_modulus,
+                                            body2.material.poisson_ratio)
+                .nonlocal_overlap;
         return context;
       };
       return pair;
@@ -136,27 +145,21 @@ namespace compax::cli
     {
       prm.enter_subsection("Multi-contact");
       dem::MulticontactAdhesiveLaw::Parameters parameters;
-      parameters.unloading_stiffness_ratio =
-        prm.get_double("Unloading stiffness ratio");
-      parameters.adhesion_stiffness_ratio =
-        prm.get_double("Adhesion stiffness ratio");
+      parameters.unloading_stiffness_ratio
+        = prm.get_double("Unloading stiffness ratio");
+      parameters.adhesion_stiffness_ratio
+        = prm.get_double("Adhesion stiffness ratio");
       parameters.plasticity_depth       = prm.get_double("Plasticity depth");
       parameters.multicontact_prefactor = prm.get_double("Prefactor");
       parameters.pull_off_force         = prm.get_double("Pull-off force");
       parameters.poisson_ratio          = body1.material.poisson_ratio;
-      const double compressive_stress =
-        prm.get_double("Mean compressive stress");
+      const double compressive_stress
+        = prm.get_double("Mean compressive stress");
       prm.leave_subsection();
 
       ContactPair pair;
-      pair.law = std::make_unique<dem::MulticontactAdhesiveLaw>(
-        dem::MulticontactAdhesiveLaw::for_pair(body1.radius,
-                                               body1.material.youngs_modulus,
-                                               body1.material.poisson_ratio,
-                                               body2.radius,
-                                               body2.material.youngs_modulus,
-                                               body2.material.poisson_ratio,
-                                               parameters));
+      pair.law
+        = elastic_law<dem::MulticontactAdhesiveLaw>(body1, body2, parameters);
       pair.context = [compressive_stress](double) {
         dem::ContactContext context;
         context.particle_pressure = -compressive_stress;
@@ -297,13 +300,7 @@ namespace compax::cli
 
     ContactPair pair;
     if (law == "hertz")
-      pair.law = std::make_unique<dem::HertzLaw>(
-        dem::HertzLaw::for_pair(body1.radius,
-                                body1.material.youngs_modulus,
-                                body1.material.poisson_ratio,
-                                body2.radius,
-                                body2.material.youngs_modulus,
-                                body2.material.poisson_ratio));
+      pair.law = elastic_law<dem::HertzLaw>(body1, body2);
     else if (law == "nonlocal-hertz")
       pair = make_nonlocal_pair(body1, body2);
     else if (law == "multicontact-adhesive")

@@ -24,12 +24,12 @@ namespace compax::cli
     /// "sphere-sphere" or "sphere-wall".
     std::string geometry;
     /// Context of the law at overlap gamma (empty context for local laws).
-    std::function<dem::ContactContext(double gamma)> context =
-      [](double) { return dem::ContactContext{}; };
+    std::function<dem::ContactContext(double gamma)> context
+      = [](double) { return dem::ContactContext{}; };
     /// Closed-form values for a history whose largest overlap is
     /// gamma_max, one printable line each.
-    std::function<std::vector<std::string>(double gamma_max)> closed_forms =
-      [](double) { return std::vector<std::string>{}; };
+    std::function<std::vector<std::string>(double gamma_max)> closed_forms
+      = [](double) { return std::vector<std::string>{}; };
   };
 
   /// Declares Law, Geometry and the subsections Particle 1, Particle 2 and

@@ -55,6 +55,17 @@ namespace compax::dem
       }
     };
 
+    double
+    rms_residual(const Model               &model,
+                 const Eigen::VectorXd     &p,
+                 const std::vector<double> &x,
+                 const std::vector<double> &y)
+    {
+      Eigen::VectorXd r(x.size());
+      Residuals{model, &x, &y, int(p.size())}(p, r);
+      return std::sqrt(r.squaredNorm() / x.size());
+    }
+
     /// Refines p in place; returns the rms residual.
     double
     levenberg_marquardt(const Model               &model,
@@ -62,17 +73,15 @@ namespace compax::dem
                         const std::vector<double> &x,
                         const std::vector<double> &y)
     {
-      Residuals                        residuals{model, &x, &y, int(p.size())};
-      Eigen::NumericalDiff<Residuals>  with_jacobian(residuals);
+      Residuals                       residuals{model, &x, &y, int(p.size())};
+      Eigen::NumericalDiff<Residuals> with_jacobian(residuals);
       Eigen::LevenbergMarquardt<Eigen::NumericalDiff<Residuals>> solver(
         with_jacobian);
       solver.parameters.xtol   = 1e-14;
       solver.parameters.ftol   = 1e-14;
       solver.parameters.maxfev = 4000;
       solver.minimize(p);
-      Eigen::VectorXd r(x.size());
-      residuals(p, r);
-      return std::sqrt(r.squaredNorm() / x.size());
+      return rms_residual(model, p, x, y);
     }
 
     void
@@ -132,9 +141,7 @@ namespace compax::dem
           const auto [a, b] = straight_line(t, Z);
           Eigen::VectorXd p(4);
           p << a, b, std::log(gap), std::log(theta);
-          Eigen::VectorXd r(rho.size());
-          Residuals{model, &rho, &Z, 4}(p, r);
-          const double rms = std::sqrt(r.squaredNorm() / rho.size());
+          const double rms = rms_residual(model, p, rho, Z);
           if (rms < best_rms)
             {
               best_rms = rms;
@@ -142,11 +149,8 @@ namespace compax::dem
             }
         }
     const double rms = levenberg_marquardt(model, best, rho, Z);
-    return {best[0],
-            best[1],
-            rho_min - std::exp(best[2]),
-            std::exp(best[3]),
-            rms};
+    return {
+      best[0], best[1], rho_min - std::exp(best[2]), std::exp(best[3]), rms};
   }
 
   PunchPressureFit
@@ -179,7 +183,7 @@ namespace compax::dem
   {
     check_sizes(rho, y, 2);
     const auto [a, b] = straight_line(rho, y);
-    double     sum    = 0;
+    double sum        = 0;
     for (std::size_t i = 0; i < rho.size(); ++i)
       sum += std::pow(a + b * rho[i] - y[i], 2);
     return {a + b, -a / b, std::sqrt(sum / rho.size())};
@@ -229,9 +233,7 @@ namespace compax::dem
         const auto [a, b] = straight_line(log_x, log_y);
         Eigen::VectorXd p(3);
         p << a, b, std::log(gap);
-        Eigen::VectorXd r(rho.size());
-        Residuals{model, &rho, &E, 3}(p, r);
-        const double rms = std::sqrt(r.squaredNorm() / rho.size());
+        const double rms = rms_residual(model, p, rho, E);
         if (rms < best_rms)
           {
             best_rms = rms;

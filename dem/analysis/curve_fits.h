@@ -40,7 +40,8 @@ namespace compax::dem
 
   /// Fits Eq. (14); needs at least 5 points with rho above jamming.
   CoordinationFit
-  fit_coordination(const std::vector<double> &rho, const std::vector<double> &Z);
+  fit_coordination(const std::vector<double> &rho,
+                   const std::vector<double> &Z);
 
   /// Fits Eq. (15) for a critical density rho_c below every rho.
   PunchPressureFit
@@ -64,5 +65,6 @@ namespace compax::dem
 
   /// Fits Eq. (24) (Phani & Niyogi).
   PhaniNiyogiFit
-  fit_phani_niyogi(const std::vector<double> &rho, const std::vector<double> &E);
+  fit_phani_niyogi(const std::vector<double> &rho,
+                   const std::vector<double> &E);
 } // namespace compax::dem

@@ -92,9 +92,9 @@ namespace compax::dem
         // times 4 pi.
         result.normal_density[k] = n > 0 ? count[k] / (n * width) : 0.0;
         used[k]                  = count[k] > 0;
-        result.force_ratio[k] =
-          used[k] && f_avg > 0 ? result.force_ratio[k] / count[k] / f_avg
-                               : 0.0;
+        result.force_ratio[k]    = used[k] && f_avg > 0
+                                     ? result.force_ratio[k] / count[k] / f_avg
+                                     : 0.0;
       }
     result.a = fit_even_legendre(result.cos_theta,
                                  result.normal_density,

@@ -33,8 +33,8 @@ namespace compax::dem
         || axial_strain.size() != radial_pressure.size())
       throw std::invalid_argument(
         "moduli_from_unloading: the three curves must have the same length");
-    const double peak =
-      *std::max_element(axial_pressure.begin(), axial_pressure.end());
+    const double peak
+      = *std::max_element(axial_pressure.begin(), axial_pressure.end());
     std::vector<double> strain, axial, radial;
     for (std::size_t i = 0; i < axial_strain.size(); ++i)
       if (axial_pressure[i] >= peak / 3 && axial_pressure[i] <= 2 * peak / 3)
@@ -52,8 +52,8 @@ namespace compax::dem
     result.lateral_slope = slope(strain, radial);
     result.points        = static_cast<unsigned int>(strain.size());
     const double M = result.axial_slope, L = result.lateral_slope;
-    result.poisson_ratio = L / (L + M);
-    const double nu      = result.poisson_ratio;
+    result.poisson_ratio  = L / (L + M);
+    const double nu       = result.poisson_ratio;
     result.youngs_modulus = M * (1 + nu) * (1 - 2 * nu) / (1 - nu);
     return result;
   }

@@ -14,10 +14,11 @@ namespace compax::dem
   }
 
   BondedElastoplasticLaw::BondedElastoplasticLaw(const PairConstants &constants)
-    : k(constants)
-    , c2(1.43 * std::exp(-0.97 / constants.plastic_exponent))
-    , inverse_m(1.0 / constants.plastic_exponent)
-  {}
+      : k(constants)
+      , c2(1.43 * std::exp(-0.97 / constants.plastic_exponent))
+      , inverse_m(1.0 / constants.plastic_exponent)
+  {
+  }
 
   BondedElastoplasticLaw
   BondedElastoplasticLaw::for_pair(const ElastoplasticMaterial &material1,
@@ -33,8 +34,8 @@ namespace compax::dem
       throw std::invalid_argument(
         "the bonded elasto-plastic law needs one plastic exponent m for both "
         "bodies of a pair");
-    const double R = effective_radius(R1, R2);
-    const double k_m = 3.0 * std::pow(6.0, -1.0 / m);
+    const double  R   = effective_radius(R1, R2);
+    const double  k_m = 3.0 * std::pow(6.0, -1.0 / m);
     PairConstants c;
     c.effective_radius  = R;
     c.effective_modulus = effective_modulus(material1.youngs_modulus,
@@ -42,11 +43,11 @@ namespace compax::dem
                                             material2.youngs_modulus,
                                             material2.poisson_ratio);
     c.plastic_exponent  = m;
-    c.plastic_coefficient =
-      pi * k_m * std::pow(R, -1.0 / m)
-      * effective_plastic_stiffness(material1.plastic_stiffness,
-                                    material2.plastic_stiffness,
-                                    m);
+    c.plastic_coefficient
+      = pi * k_m * std::pow(R, -1.0 / m)
+        * effective_plastic_stiffness(material1.plastic_stiffness,
+                                      material2.plastic_stiffness,
+                                      m);
     c.fracture_toughness = fracture_toughness;
     c.regularization     = regularization;
     c.regularized        = regularized;
@@ -88,9 +89,9 @@ namespace compax::dem
     const double gamma_p = plastic_overlap(a_p);
     if (gamma >= gamma_p)
       return plastic_radius(gamma);
-    const double recovery = 4.0 * k.effective_modulus * (gamma_p - gamma)
-                            / (3.0 * k.plastic_coefficient
-                               * std::pow(a_p, inverse_m));
+    const double recovery
+      = 4.0 * k.effective_modulus * (gamma_p - gamma)
+        / (3.0 * k.plastic_coefficient * std::pow(a_p, inverse_m));
     return std::sqrt(std::max(a_p * a_p - recovery * recovery, 0.0));
   }
 
@@ -115,8 +116,8 @@ namespace compax::dem
       }
 
     // Elastic (un)loading: a^2 = a_p^2 - (alpha (gamma_p - gamma))^2.
-    const double alpha =
-      4.0 * k.effective_modulus / (3.0 * n_p * std::pow(a_p, inverse_m));
+    const double alpha
+      = 4.0 * k.effective_modulus / (3.0 * n_p * std::pow(a_p, inverse_m));
     const double recovery = alpha * (gamma_p - gamma);
     const double a2       = a_p * a_p - recovery * recovery;
     if (a2 <= 0.0)
@@ -136,9 +137,9 @@ namespace compax::dem
         // g = a^{3/2} (a_B - a) / ((1+xi) a_B - a) (regularized, Eq. 4) or
         // g = a^{3/2} (Eq. 2), and da/dgamma = alpha^2 (gamma_p - gamma) / a;
         // the 1/a is folded into dg/da / a.
-        const double root_a = std::sqrt(a);
-        double       scale  = 2.0 * k.fracture_toughness * std::sqrt(pi);
-        double       g      = a * root_a;
+        const double root_a  = std::sqrt(a);
+        double       scale   = 2.0 * k.fracture_toughness * std::sqrt(pi);
+        double       g       = a * root_a;
         double       dg_da_a = 1.5 / root_a;
         if (k.regularized)
           {

@@ -8,10 +8,11 @@ namespace compax::dem
 {
   HertzLaw::HertzLaw(const double effective_radius,
                      const double effective_modulus)
-    : R(effective_radius)
-    , E(effective_modulus)
-    , n_H(4.0 / 3.0 * effective_modulus * std::sqrt(effective_radius))
-  {}
+      : R(effective_radius)
+      , E(effective_modulus)
+      , n_H(4.0 / 3.0 * effective_modulus * std::sqrt(effective_radius))
+  {
+  }
 
   HertzLaw
   HertzLaw::for_pair(const double R1,

@@ -20,7 +20,12 @@ namespace compax::dem
     /// Hertz law of two spheres given their radii and elastic constants;
     /// pass compax::dem::rigid for the radius and modulus of a wall.
     static HertzLaw
-    for_pair(double R1, double E1, double nu1, double R2, double E2, double nu2);
+    for_pair(double R1,
+             double E1,
+             double nu1,
+             double R2,
+             double E2,
+             double nu2);
 
     using ContactLaw::evaluate;
     using ContactLaw::updated_history;

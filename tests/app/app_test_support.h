@@ -32,7 +32,8 @@ namespace compax::testing
     void
     SetUp() override
     {
-      const auto *info = ::testing::UnitTest::GetInstance()->current_test_info();
+      const auto *info
+        = ::testing::UnitTest::GetInstance()->current_test_info();
       folder = std::filesystem::temp_directory_path()
                / ("compax-app-" + std::string(info->test_suite_name()) + "-"
                   + info->name() + "-" + std::to_string(::getpid()));
@@ -50,11 +51,10 @@ namespace compax::testing
     RunResult
     compax(const std::string &arguments) const
     {
-      const auto        out = folder / "stdout.txt", err = folder / "stderr.txt";
-      const std::string command = "cd '" + folder.string() + "' && '"
-                                  + COMPAX_EXECUTABLE + "' " + arguments
-                                  + " > '" + out.string() + "' 2> '"
-                                  + err.string() + "'";
+      const auto out = folder / "stdout.txt", err = folder / "stderr.txt";
+      const std::string command
+        = "cd '" + folder.string() + "' && '" + COMPAX_EXECUTABLE + "' "
+          + arguments + " > '" + out.string() + "' 2> '" + err.string() + "'";
       const int status = std::system(command.c_str());
       RunResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1,
                   read(out),

@@ -16,38 +16,41 @@ namespace
 }
 
 class ContactCommand : public AppTest
-{};
+{
+};
 
 TEST_F(ContactCommand, DefaultDuCaseMatchesClosedForms)
 {
   const auto r = compax("contact -o out");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const Csv csv(folder / "out" / "contact.csv");
-  EXPECT_EQ(csv.header,
-            (std::vector<std::string>{
-              "step", "gamma", "force", "contact_radius", "a_p", "a_B",
-              "stiffness"}));
+  EXPECT_EQ(
+    csv.header,
+    (std::vector<std::string>{
+      "step", "gamma", "force", "contact_radius", "a_p", "a_B", "stiffness"}));
   ASSERT_EQ(csv.rows(), 801u);
 
   // Sphere R = 1.3 um on a rigid flat: R* = R, E* = E/(1-nu^2),
   // n_p = pi k R^{-1/m} kappa.
   const double R = 1.3e-6, E = 233e9 / (1 - 0.09), kappa = 12.1e9, m = 1.79;
   const double K = 0.48e6, gamma_max = 28.2e-9;
-  const double c2  = 1.43 * std::exp(-0.97 / m);
-  const double n_p = pi * 3 * std::pow(6.0, -1 / m) * std::pow(R, -1 / m) * kappa;
+  const double c2 = 1.43 * std::exp(-0.97 / m);
+  const double n_p
+    = pi * 3 * std::pow(6.0, -1 / m) * std::pow(R, -1 / m) * kappa;
   const double a_p = std::sqrt(2 * c2 * R * gamma_max);
 
-  const auto &force = csv.column.at("force");
-  const auto &gamma = csv.column.at("gamma");
-  const auto &a_B   = csv.column.at("a_B");
-  const double peak = *std::max_element(force.begin(), force.end());
+  const auto  &force = csv.column.at("force");
+  const auto  &gamma = csv.column.at("gamma");
+  const auto  &a_B   = csv.column.at("a_B");
+  const double peak  = *std::max_element(force.begin(), force.end());
   EXPECT_NEAR(peak, n_p * std::pow(a_p, 2 + 1 / m), 1e-9 * peak);
   EXPECT_NEAR(csv.column.at("a_p").back(), a_p, 1e-9 * a_p);
 
   // The bond breaks within one step of the closed form of Sec. 3.
-  const double gamma_b = gamma_max - 3 * n_p * std::pow(a_p, 1 + 1 / m) / (4 * E);
-  std::size_t broken =
-    std::max_element(gamma.begin(), gamma.end()) - gamma.begin();
+  const double gamma_b
+    = gamma_max - 3 * n_p * std::pow(a_p, 1 + 1 / m) / (4 * E);
+  std::size_t broken
+    = std::max_element(gamma.begin(), gamma.end()) - gamma.begin();
   while (broken < a_B.size() && a_B[broken] > 0)
     ++broken;
   ASSERT_LT(broken, a_B.size());
@@ -104,7 +107,8 @@ struct BadInput
 
 class ContactBadInput : public AppTest,
                         public ::testing::WithParamInterface<BadInput>
-{};
+{
+};
 
 TEST_P(ContactBadInput, IsRejectedWithExitCode2AndNoOutput)
 {

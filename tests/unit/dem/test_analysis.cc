@@ -35,8 +35,8 @@ namespace
 
 TEST(CurveFits, CoordinationPowerLawOfEquation14IsRecovered)
 {
-  const double Z_c = 4.6, Z_0 = 9.0, rho_c = 0.61, theta = 0.55;
-  const auto   rho = densities(0.63, 0.97, 25);
+  const double        Z_c = 4.6, Z_0 = 9.0, rho_c = 0.61, theta = 0.55;
+  const auto          rho = densities(0.63, 0.97, 25);
   std::vector<double> Z;
   for (double r : rho)
     Z.push_back(Z_c + Z_0 * std::pow(r - rho_c, theta));
@@ -50,8 +50,8 @@ TEST(CurveFits, CoordinationPowerLawOfEquation14IsRecovered)
 
 TEST(CurveFits, PunchPressurePowerLawOfEquation15WithNoise)
 {
-  const double K_p = 480e6, beta = 2.1, rho_c = 0.6;
-  const auto   rho = densities(0.65, 0.99, 30);
+  const double        K_p = 480e6, beta = 2.1, rho_c = 0.6;
+  const auto          rho = densities(0.65, 0.99, 30);
   std::vector<double> p;
   for (int i = 0; i < 30; ++i)
     p.push_back(K_p * std::pow(rho[i] - rho_c, beta) * wiggle(i, 0.01));
@@ -62,8 +62,8 @@ TEST(CurveFits, PunchPressurePowerLawOfEquation15WithNoise)
 
 TEST(CurveFits, LinearCriticalRelationsOfEquations17And23)
 {
-  const double y_0 = 0.045, rho_c = 0.58;
-  const auto   rho = densities(0.66, 0.99, 12);
+  const double        y_0 = 0.045, rho_c = 0.58;
+  const auto          rho = densities(0.66, 0.99, 12);
   std::vector<double> y;
   for (double r : rho)
     y.push_back(y_0 * (r - rho_c) / (1 - rho_c));
@@ -74,8 +74,8 @@ TEST(CurveFits, LinearCriticalRelationsOfEquations17And23)
 
 TEST(CurveFits, ResidualRadialPressureOfEquation19)
 {
-  const double s0 = 21e6, rho_c = 0.63;
-  const auto   rho = densities(0.66, 0.99, 12);
+  const double        s0 = 21e6, rho_c = 0.63;
+  const auto          rho = densities(0.66, 0.99, 12);
   std::vector<double> s;
   for (double r : rho)
     s.push_back(s0 * r * (r - rho_c) / (1 - rho_c));
@@ -86,8 +86,8 @@ TEST(CurveFits, ResidualRadialPressureOfEquation19)
 
 TEST(CurveFits, PhaniNiyogiOfEquation24)
 {
-  const double E_0 = 3.1e9, n = 1.7, rho_c = 0.62;
-  const auto   rho = densities(0.68, 0.98, 12);
+  const double        E_0 = 3.1e9, n = 1.7, rho_c = 0.62;
+  const auto          rho = densities(0.68, 0.98, 12);
   std::vector<double> E;
   for (double r : rho)
     E.push_back(E_0 * std::pow((r - rho_c) / (1 - rho_c), n));
@@ -121,10 +121,10 @@ TEST(Fabric, SpectraOfAKnownDistributionAreRecovered)
     return 1 + c[0] * legendre(2, x) + c[1] * legendre(4, x)
            + c[2] * legendre(6, x) + c[3] * legendre(8, x);
   };
-  std::mt19937_64                      engine(42);
-  auto uniform = [&] { return (engine() >> 11) * 0x1.0p-53; };
-  std::vector<Eigen::Vector3d>         normals;
-  std::vector<double>                  forces;
+  std::mt19937_64 engine(42);
+  auto            uniform = [&] { return (engine() >> 11) * 0x1.0p-53; };
+  std::vector<Eigen::Vector3d> normals;
+  std::vector<double>          forces;
   while (normals.size() < 400000)
     {
       const double z = 2 * uniform() - 1, phi = 2 * M_PI * uniform();
@@ -149,9 +149,9 @@ TEST(Fabric, SpectraOfAKnownDistributionAreRecovered)
 
 TEST(UnloadingModuli, HookesLawInUniaxialStrainGivesEAndNu)
 {
-  const double E = 2.4e9, nu = 0.27;
-  const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
-  const double L = E * nu / ((1 + nu) * (1 - 2 * nu));
+  const double        E = 2.4e9, nu = 0.27;
+  const double        M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  const double        L = E * nu / ((1 + nu) * (1 - 2 * nu));
   std::vector<double> strain, axial, radial;
   // Unloading from 200 MPa with a residual radial pressure of 30 MPa.
   for (int i = 0; i <= 60; ++i)

@@ -47,13 +47,14 @@ namespace
     double R, E, n_p, m, c2;
 
     Hand(double R_bar, double E_bar, double kappa_eff, double m)
-      : R(R_bar)
-      , E(E_bar)
-      , n_p(pi * 3.0 * std::pow(6.0, -1.0 / m) * std::pow(R_bar, -1.0 / m)
-            * kappa_eff)
-      , m(m)
-      , c2(1.43 * std::exp(-0.97 / m))
-    {}
+        : R(R_bar)
+        , E(E_bar)
+        , n_p(pi * 3.0 * std::pow(6.0, -1.0 / m) * std::pow(R_bar, -1.0 / m)
+              * kappa_eff)
+        , m(m)
+        , c2(1.43 * std::exp(-0.97 / m))
+    {
+    }
 
     double
     a_p(double gamma) const
@@ -73,7 +74,8 @@ namespace
   {
     const auto mat = du_material();
     return Hand(du_radius,
-                mat.youngs_modulus / (1 - mat.poisson_ratio * mat.poisson_ratio),
+                mat.youngs_modulus
+                  / (1 - mat.poisson_ratio * mat.poisson_ratio),
                 mat.plastic_stiffness,
                 mat.plastic_exponent);
   }
@@ -97,8 +99,8 @@ namespace
       for (int i = 1; i <= steps; ++i)
         {
           const double t = double(i) / steps;
-          const double g =
-            (1 - t) * turning_points[s - 1] + t * turning_points[s];
+          const double g
+            = (1 - t) * turning_points[s - 1] + t * turning_points[s];
           states.push_back({g, h});
           h = law.updated_history(g, h);
         }
@@ -112,13 +114,13 @@ TEST(BondedElastoplastic, PairConstantsFollowTheMixingRulesOfSection2)
   const ElastoplasticMaterial m2{30e9, 0.2, 900e6, 2.0};
   const double                R1 = 220e-6, R2 = 150e-6;
   const auto law = BondedElastoplasticLaw::for_pair(m1, R1, m2, R2, 1e6, 0.01);
-  const auto swapped =
-    BondedElastoplasticLaw::for_pair(m2, R2, m1, R1, 1e6, 0.01);
+  const auto swapped
+    = BondedElastoplasticLaw::for_pair(m2, R2, m1, R1, 1e6, 0.01);
 
   const double R = 1 / (1 / R1 + 1 / R2);
   const double E = 1 / ((1 - 0.25 * 0.25) / 5e9 + (1 - 0.2 * 0.2) / 30e9);
-  const double kappa =
-    std::pow(std::pow(150e6, -2.0) + std::pow(900e6, -2.0), -0.5);
+  const double kappa
+    = std::pow(std::pow(150e6, -2.0) + std::pow(900e6, -2.0), -0.5);
   const Hand hand(R, E, kappa, 2.0);
   EXPECT_NEAR(law.constants().effective_radius, R, 1e-15 * R);
   EXPECT_NEAR(law.constants().effective_modulus, E, 1e-12 * E);
@@ -168,18 +170,17 @@ TEST(BondedElastoplastic, StiffnessEqualsFiniteDifferenceAlongLoadUnloadReload)
           auto P = [&](double g) {
             return law.response(g, a_p, s.history.a_B).force;
           };
-          const double fd    = (P(s.gamma + h) - P(s.gamma - h)) / (2 * h);
-          const double exact = law.response(s.gamma, a_p, s.history.a_B)
-                                 .stiffness;
+          const double fd = (P(s.gamma + h) - P(s.gamma - h)) / (2 * h);
+          const double exact
+            = law.response(s.gamma, a_p, s.history.a_B).stiffness;
           // Normalised by the scale of the stiffness on this branch so that
           // the zero crossing at pull-off is not a 0/0.
-          const double scale =
-            std::max(std::abs(exact),
-                     law.response(std::max(s.gamma, gamma_p), a_p, 0)
-                       .stiffness);
+          const double scale = std::max(
+            std::abs(exact),
+            law.response(std::max(s.gamma, gamma_p), a_p, 0).stiffness);
           EXPECT_LE(std::abs(fd - exact), 1e-6 * scale)
-            << "gamma " << s.gamma << " a_p " << a_p << " a_B "
-            << s.history.a_B << " regularized " << regularized;
+            << "gamma " << s.gamma << " a_p " << a_p << " a_B " << s.history.a_B
+            << " regularized " << regularized;
           ++checked;
         }
       EXPECT_GT(checked, 1500);
@@ -188,8 +189,8 @@ TEST(BondedElastoplastic, StiffnessEqualsFiniteDifferenceAlongLoadUnloadReload)
 
 TEST(BondedElastoplastic, RegularizedForceIsContinuousAtOnsetOfUnloading)
 {
-  const auto   law = du_on_flat(0.01);
-  const double a_p = law.plastic_radius(du_gamma_max);
+  const auto   law       = du_on_flat(0.01);
+  const double a_p       = law.plastic_radius(du_gamma_max);
   const double P_loading = law.response(du_gamma_max, 0, 0).force;
   for (double eps : {1e-6, 1e-9, 1e-12})
     {
@@ -204,19 +205,19 @@ TEST(BondedElastoplastic, UnregularizedForceJumpsByTheBridgeForce)
   const double a_p  = law.plastic_radius(du_gamma_max);
   const double jump = 2 * du_toughness * std::sqrt(pi) * std::pow(a_p, 1.5);
   const double P_loading = law.response(du_gamma_max, 0, 0).force;
-  const double P_unloading =
-    law.response(du_gamma_max * (1 - 1e-12), a_p, a_p).force;
+  const double P_unloading
+    = law.response(du_gamma_max * (1 - 1e-12), a_p, a_p).force;
   EXPECT_NEAR(P_loading - P_unloading, jump, 1e-6 * jump);
 }
 
 TEST(BondedElastoplastic, ForceVanishesWhereTheContactRadiusDoes)
 {
-  const auto   law     = du_on_flat();
-  const Hand   hand    = du_flat_hand();
-  const double a_p     = law.plastic_radius(du_gamma_max);
-  const double gamma_b = du_gamma_max
-                         - 3 * hand.n_p * std::pow(a_p, 1 + 1 / hand.m)
-                             / (4 * hand.E);
+  const auto   law  = du_on_flat();
+  const Hand   hand = du_flat_hand();
+  const double a_p  = law.plastic_radius(du_gamma_max);
+  const double gamma_b
+    = du_gamma_max
+      - 3 * hand.n_p * std::pow(a_p, 1 + 1 / hand.m) / (4 * hand.E);
   EXPECT_NEAR(law.breakage_overlap(a_p), gamma_b, 1e-12 * du_gamma_max);
   // a = 0 and P = 0 at the breakage overlap (up to the round-off of
   // a_p^2 - recovery^2) and below it ...
@@ -233,7 +234,8 @@ TEST(BondedElastoplastic, ForceVanishesWhereTheContactRadiusDoes)
   // ... and P -> 0 continuously as a -> 0 from above.
   const auto r = law.response(gamma_b + 1e-6 * du_gamma_max, a_p, a_p);
   EXPECT_GT(r.contact_radius, 0.0);
-  EXPECT_LT(std::abs(r.force), 1e-3 * law.response(du_gamma_max, a_p, a_p).force);
+  EXPECT_LT(std::abs(r.force),
+            1e-3 * law.response(du_gamma_max, a_p, a_p).force);
 }
 
 TEST(BondedElastoplastic, UnregularizedCriticalRadiusSatisfiesClosedForm)
@@ -246,16 +248,16 @@ TEST(BondedElastoplastic, UnregularizedCriticalRadiusSatisfiesClosedForm)
   // Golden-section search for the most tensile force, using P only.
   double       lo = gamma_b, hi = du_gamma_max;
   const double phi = (std::sqrt(5.0) - 1) / 2;
-  auto P = [&](double g) { return law.response(g, a_p, a_p).force; };
+  auto         P   = [&](double g) { return law.response(g, a_p, a_p).force; };
   for (int i = 0; i < 200; ++i)
     {
       const double x1 = hi - phi * (hi - lo), x2 = lo + phi * (hi - lo);
       (P(x1) < P(x2) ? hi : lo) = (P(x1) < P(x2) ? x2 : x1);
     }
-  const double x   = law.response(0.5 * (lo + hi), a_p, a_p).contact_radius / a_p;
+  const double x = law.response(0.5 * (lo + hi), a_p, a_p).contact_radius / a_p;
   const double chi = du_flat_hand().chi(du_toughness, a_p);
-  const double residual =
-    x * x * x - chi * std::pow(3 * pi / 8, 2) * (1 - x * x);
+  const double residual
+    = x * x * x - chi * std::pow(3 * pi / 8, 2) * (1 - x * x);
   EXPECT_NEAR(residual, 0.0, 1e-6 * x * x * x);
   EXPECT_GT(x, 0.0);
   EXPECT_LT(x, 1.0);
@@ -265,17 +267,18 @@ TEST(BondedElastoplastic, ChiOfTheDuCaseUnderBothGeometricConventions)
 {
   // Sphere on a rigid flat (the finite-element model of Du et al.): the
   // convention compax uses for sphere-wall contacts.
-  const Hand   flat   = du_flat_hand();
-  const double a_flat = flat.a_p(du_gamma_max);
+  const Hand   flat     = du_flat_hand();
+  const double a_flat   = flat.a_p(du_gamma_max);
   const double chi_flat = flat.chi(du_toughness, a_flat);
   const auto   law_flat = du_on_flat();
-  EXPECT_NEAR(law_flat.bonding_energy_ratio(law_flat.plastic_radius(du_gamma_max)),
+  EXPECT_NEAR(law_flat.bonding_energy_ratio(
+                law_flat.plastic_radius(du_gamma_max)),
               chi_flat,
               1e-10 * chi_flat);
 
   // Two identical spheres of radius R: R* = R/2, E* = E/2(1-nu^2),
   // kappa* = 2^{-1/m} kappa, with gamma_max the mutual approach.
-  const auto   mat  = du_material();
+  const auto   mat = du_material();
   const Hand   pair(du_radius / 2,
                   mat.youngs_modulus / (2 * (1 - 0.09)),
                   std::pow(2.0, -1 / 1.79) * mat.plastic_stiffness,
@@ -296,7 +299,7 @@ TEST(BondedElastoplastic, ChiOfTheDuCaseUnderBothGeometricConventions)
 
 TEST(BondedElastoplastic, HistoryFollowsEquation13)
 {
-  const auto law = du_on_flat();
+  const auto     law = du_on_flat();
   ContactHistory h;
   // Plastic loading forms the bond: a_B = a_p = a.
   h = law.updated_history(20e-9, h);

@@ -16,7 +16,7 @@ TEST(HertzLaw, ForceAndRadiusOfTwoEqualSpheresMatchJohnson)
   const auto   law = HertzLaw::for_pair(R, E, nu, R, E, nu);
   // Two equal spheres: R* = R/2, E* = E / (2 (1 - nu^2)).
   const double R_star = R / 2, E_star = E / (2 * (1 - nu * nu));
-  const auto   r      = law.evaluate(gamma, ContactHistory{});
+  const auto   r = law.evaluate(gamma, ContactHistory{});
   EXPECT_NEAR(r.force,
               4.0 / 3.0 * E_star * std::sqrt(R_star) * std::pow(gamma, 1.5),
               1e-12 * r.force);
@@ -29,10 +29,10 @@ TEST(HertzLaw, StiffnessEqualsCentralFiniteDifference)
   const auto law = HertzLaw::for_pair(1e-3, 2e9, 0.2, 2e-3, 7e9, 0.35);
   for (double gamma = 1e-8; gamma < 1e-4; gamma *= 1.7)
     {
-      const double h  = 1e-5 * gamma;
-      const double fd = (law.response(gamma + h).force
-                         - law.response(gamma - h).force)
-                        / (2 * h);
+      const double h = 1e-5 * gamma;
+      const double fd
+        = (law.response(gamma + h).force - law.response(gamma - h).force)
+          / (2 * h);
       EXPECT_NEAR(law.response(gamma).stiffness, fd, 1e-6 * std::abs(fd))
         << "gamma = " << gamma;
     }
