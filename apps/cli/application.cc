@@ -26,6 +26,7 @@ namespace compax::cli
     {
       bool                                 help             = false;
       bool                                 print_parameters = false;
+      bool                                 check_only       = false;
       std::optional<std::filesystem::path> parameter_file;
       std::optional<std::filesystem::path> output;
     };
@@ -42,6 +43,8 @@ namespace compax::cli
              "file: its built-in default case)\n"
              "  compax <command> --print-parameters       print the "
              "documented defaults as a valid .prm\n"
+             "  compax <command> [file.prm] --check       validate the "
+             "parameters, run nothing\n"
              "  compax <command> --help                   describe a "
              "command\n"
              "  compax --help | --version\n\n"
@@ -68,6 +71,8 @@ namespace compax::cli
             call.help = true;
           else if (word == "--print-parameters")
             call.print_parameters = true;
+          else if (word == "--check")
+            call.check_only = true;
           else if (word == "-o" || word == "--output")
             {
               if (i + 1 == words.size())
@@ -103,8 +108,8 @@ namespace compax::cli
                     << "\n\n"
                     << command.description() << "\n\nUsage: compax "
                     << command.name()
-                    << " [file.prm] [-o OUTDIR] | --print-parameters | "
-                       "--help\nDefault OUTDIR: "
+                    << " [file.prm] [-o OUTDIR] | [file.prm] --check | "
+                       "--print-parameters | --help\nDefault OUTDIR: "
                     << command.name()
                     << "-output. Parameters (documented, with units): "
                        "compax "
@@ -123,6 +128,12 @@ namespace compax::cli
       if (call.parameter_file)
         parse_parameter_file(prm, *call.parameter_file);
       command.check_parameters(prm);
+      if (call.check_only)
+        {
+          std::cout << "compax " << command.name() << ": parameters are valid"
+                    << '\n';
+          return success;
+        }
 
       OutputDirectory output(call.output.value_or(command.name() + "-output"));
       std::ofstream(output.staging() / "parameters.prm") << [&] {

@@ -1,6 +1,7 @@
 #include "apps/cli/commands.h"
 
 #include "apps/contact/contact_command.h"
+#include "apps/die/die_command.h"
 
 namespace compax::cli
 {
@@ -9,6 +10,7 @@ namespace compax::cli
   {
     std::vector<std::unique_ptr<Command>> commands;
     commands.push_back(make_contact_command());
+    commands.push_back(make_die_command());
     return commands;
   }
 } // namespace compax::cli

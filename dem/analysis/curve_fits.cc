@@ -215,13 +215,17 @@ namespace compax::dem
   {
     check_sizes(rho, E, 3);
     const double rho_min = smallest(rho);
-    const Model  model   = [rho_min](const Eigen::VectorXd &p, double r) {
-      const double rho_c = rho_min - std::exp(p[2]);
+    // rho_c = rho_min / (1 + exp(-s)) stays in (0, rho_min): with few,
+    // nearly collinear points the unconstrained fit runs off to rho_c -> -inf.
+    const auto critical
+      = [rho_min](double s) { return rho_min / (1 + std::exp(-s)); };
+    const Model model = [critical](const Eigen::VectorXd &p, double r) {
+      const double rho_c = critical(p[2]);
       return std::exp(p[0]) * std::pow((r - rho_c) / (1 - rho_c), p[1]);
     };
     Eigen::VectorXd best(3);
     double          best_rms = std::numeric_limits<double>::infinity();
-    for (double gap = 1e-4; gap < 0.5; gap *= 1.3)
+    for (double gap = 1e-4; gap < 0.99 * rho_min; gap *= 1.3)
       {
         const double        rho_c = rho_min - gap;
         std::vector<double> log_x(rho.size()), log_y(rho.size());
@@ -232,7 +236,7 @@ namespace compax::dem
           }
         const auto [a, b] = straight_line(log_x, log_y);
         Eigen::VectorXd p(3);
-        p << a, b, std::log(gap);
+        p << a, b, -std::log(rho_min / rho_c - 1);
         const double rms = rms_residual(model, p, rho, E);
         if (rms < best_rms)
           {
@@ -241,6 +245,6 @@ namespace compax::dem
           }
       }
     const double rms = levenberg_marquardt(model, best, rho, E);
-    return {std::exp(best[0]), best[1], rho_min - std::exp(best[2]), rms};
+    return {std::exp(best[0]), best[1], critical(best[2]), rms};
   }
 } // namespace compax::dem

@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -93,11 +94,13 @@ namespace compax::testing
     std::filesystem::path folder;
   };
 
-  /// A CSV file as its header and numeric columns by name.
+  /// A CSV file as its header and its columns by name, as numbers (NaN for
+  /// text) and as text.
   struct Csv
   {
-    std::vector<std::string>                   header;
-    std::map<std::string, std::vector<double>> column;
+    std::vector<std::string>                        header;
+    std::map<std::string, std::vector<double>>      column;
+    std::map<std::string, std::vector<std::string>> text;
 
     explicit Csv(const std::filesystem::path &file)
     {
@@ -114,7 +117,14 @@ namespace compax::testing
           for (const auto &name : header)
             {
               std::getline(cells, cell, ',');
-              column[name].push_back(cell.empty() ? 0.0 : std::stod(cell));
+              text[name].push_back(cell);
+              char        *end   = nullptr;
+              const double value = std::strtod(cell.c_str(), &end);
+              column[name].push_back(
+                cell.empty() ? 0.0
+                : end == cell.c_str() + cell.size()
+                  ? value
+                  : std::numeric_limits<double>::quiet_NaN());
             }
         }
     }

@@ -194,3 +194,20 @@ TEST_F(ContactCommand, EveryLawRunsAndMulticontactReducesToHertz)
       EXPECT_GE(nonlocal.column.at("force")[i], P);
     }
 }
+
+TEST_F(ContactCommand, EveryShippedParameterFileIsValid)
+{
+  // apps/parameters/<command>_*.prm must parse and pass the command's checks.
+  int checked = 0;
+  for (const auto &entry : std::filesystem::directory_iterator(
+         std::filesystem::path(COMPAX_SOURCE_DIR) / "apps" / "parameters"))
+    {
+      const std::string name    = entry.path().filename().string();
+      const std::string command = name.substr(0, name.find('_'));
+      const auto        r
+        = compax(command + " '" + entry.path().string() + "' --check");
+      EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+      ++checked;
+    }
+  EXPECT_GE(checked, 3);
+}

@@ -1,0 +1,202 @@
+#include "apps/die/die_command.h"
+
+#include "apps/cli/input_error.h"
+#include "apps/cli/parameters.h"
+#include "apps/common/csv_writer.h"
+#include "apps/common/gnuplot.h"
+#include "apps/die/die_parameters.h"
+#include "apps/die/die_study_fits.h"
+#include "dem/die/die_setup.h"
+
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+namespace compax::cli
+{
+  namespace
+  {
+    std::string
+    text(const double value)
+    {
+      std::ostringstream out;
+      out << value;
+      return out.str();
+    }
+
+    /// One row per unloading branch: the densities, recoveries and
+    /// pressures of Gonzalez 2018 Secs. 5.3-5.7.
+    void
+    write_branches(const std::filesystem::path           &file,
+                   const std::vector<dem::BranchSummary> &branches)
+    {
+      CsvWriter csv(file,
+                    {"branch",
+                     "rho_max_in_die",
+                     "rho_min_in_die",
+                     "rho_tablet",
+                     "max_punch_pressure",
+                     "elastic_recovery_rho",
+                     "elastic_recovery_H",
+                     "residual_radial_pressure",
+                     "ejection_pressure",
+                     "coordination_compacted",
+                     "bonding_surface_compacted",
+                     "bonding_surface_unloaded",
+                     "bonding_surface_ejected",
+                     "tablet_youngs_modulus",
+                     "tablet_poisson_ratio"});
+      for (const auto &b : branches)
+        {
+          csv << b.branch << b.rho_max_in_die << b.rho_min_in_die
+              << b.rho_tablet << b.max_punch_pressure << b.elastic_recovery_rho
+              << b.elastic_recovery_H << b.residual_radial_pressure
+              << b.ejection_pressure << b.coordination_compacted
+              << b.bonding_surface_compacted << b.bonding_surface_unloaded
+              << b.bonding_surface_ejected << b.tablet.youngs_modulus
+              << b.tablet.poisson_ratio;
+          csv.end_row();
+        }
+    }
+
+    void
+    plot(const std::filesystem::path &folder)
+    {
+      render_png(folder,
+                 "die.gp",
+                 "set datafile columnheaders\n"
+                 "set multiplot layout 1,2\n"
+                 "set xlabel 'in-die relative density [-]'\n"
+                 "set ylabel 'pressure [MPa]'\n"
+                 "plot 'die.csv' using (column('relative_density')):"
+                 "(column('upper_punch_pressure')/1e6) with linespoints "
+                 "pt 7 ps 0.4 title 'upper punch', '' using "
+                 "(column('relative_density')):(column('die_wall_pressure')"
+                 "/1e6) with linespoints pt 7 ps 0.4 title 'die wall'\n"
+                 "set ylabel 'mean coordination number Z [-]'\n"
+                 "plot 'die.csv' using (column('relative_density')):"
+                 "(column('coordination_number')) with points pt 7 ps 0.5 "
+                 "title 'Z'\n"
+                 "unset multiplot\n",
+                 "die.png");
+    }
+
+    class DieCommand : public Command
+    {
+    public:
+      std::string
+      name() const override
+      {
+        return "die";
+      }
+
+      std::string
+      summary() const override
+      {
+        return "die compaction, unloading and ejection of a particle bed";
+      }
+
+      std::string
+      description() const override
+      {
+        return "Fills a rigid cylindrical die with bonded elasto-plastic "
+               "spheres by ballistic deposition, compacts the bed by the "
+               "upper punch through a sequence of static equilibria "
+               "(trust-region Newton; internal variables updated on "
+               "converged steps only, Gonzalez 2018 Eq. 13), unloads it "
+               "from each unloading point until the punch carries no force, "
+               "and ejects it (Gonzalez 2018, Sec. 5).\n\nWrites die.csv "
+               "(one row per converged step: stage, branch, densities, "
+               "punch and die-wall forces and pressures, coordination "
+               "number, bonding surface, bonds formed and broken, elastic "
+               "recovery, residual radial and ejection pressure, solver "
+               "iterations and residual), branches.csv (one row per "
+               "unloading branch, with the tablet's E and nu), fits.csv and "
+               "fits.md (Eqs. 14-24 fitted to the study), die.png.\n\n"
+               "Built-in default: Material 1 of Gonzalez 2018 Table 1 "
+               "(R = 220 um), 400 particles in a 4 mm die, compacted to an "
+               "in-die relative density of 0.87, with unloading branches (and "
+               "ejection) from 0.75, 0.79, 0.83 and 0.87. The "
+               "full study of Sec. 5 is in apps/parameters/"
+               "die_material1_6512.prm and die_material2_6512.prm.";
+      }
+
+      void
+      declare_parameters(dealii::ParameterHandler &prm) const override
+      {
+        declare_die_parameters(prm);
+      }
+
+      void
+      check_parameters(dealii::ParameterHandler &prm) const override
+      {
+        get_die_study(prm);
+      }
+
+      int
+      run(dealii::ParameterHandler    &prm,
+          const std::filesystem::path &folder) const override
+      {
+        DieStudy   study   = get_die_study(prm);
+        const auto started = std::chrono::steady_clock::now();
+        std::cout << "Packing " << study.deposition.n_particles
+                  << " particles by ballistic deposition in a "
+                  << study.deposition.die_diameter * 1e3 << " mm die ..."
+                  << std::endl;
+        dem::Bed     bed   = dem::fill_die(study.deposition);
+        const double rho_0 = bed.relative_density();
+        std::cout << "  initial in-die relative density " << rho_0 << std::endl;
+        if (study.final_density <= rho_0)
+          reject_entry("Protocol/Final relative density",
+                       text(study.final_density),
+                       "must exceed the packing's relative density "
+                         + text(rho_0));
+        study.protocol.compaction_targets
+          = dem::density_targets(rho_0,
+                                 study.final_density,
+                                 study.compaction_steps);
+
+        std::ofstream      csv(folder / "die.csv");
+        dem::DieCompaction die(std::move(bed),
+                               study.model,
+                               study.protocol,
+                               study.equilibrium);
+        die.set_output(&csv, &std::cout);
+        int code = success;
+        try
+          {
+            die.run();
+          }
+        catch (const std::runtime_error &e)
+          {
+            std::cerr << "compax die: " << e.what()
+                      << "; the converged steps are kept in die.csv\n";
+            code = not_converged;
+          }
+        csv.close();
+
+        write_branches(folder / "branches.csv", die.branches());
+        write_die_fits(folder, die.records(), die.branches());
+        plot(folder);
+
+        const double seconds = std::chrono::duration<double>(
+                                 std::chrono::steady_clock::now() - started)
+                                 .count();
+        std::cout << "Solver: " << die.newton_iterations
+                  << " Newton iterations (" << die.cg_iterations << " CG), "
+                  << die.assemblies << " assemblies (" << die.assembly_seconds
+                  << " s), linear solves " << die.linear_seconds
+                  << " s, relaxation " << die.fire_seconds << " s; total "
+                  << seconds << " s\n";
+        return code;
+      }
+    };
+  } // namespace
+
+  std::unique_ptr<Command>
+  make_die_command()
+  {
+    return std::make_unique<DieCommand>();
+  }
+} // namespace compax::cli

@@ -1,0 +1,31 @@
+#pragma once
+
+#include "dem/die/die_compaction.h"
+#include "dem/packing/ballistic_deposition.h"
+#include "dem/solver/contact_model.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace compax::cli
+{
+  /// Everything `compax die` reads from its .prm, in the library's types.
+  struct DieStudy
+  {
+    dem::DepositionParameters deposition;
+    dem::ContactModel         model;
+    dem::DieProtocol          protocol;
+    dem::EquilibriumOptions   equilibrium;
+    /// In-die relative density at which compaction stops [-].
+    double final_density;
+    /// Number of equal density steps from the packing to final_density.
+    int compaction_steps;
+  };
+
+  /// Declares the subsections Material, Bonding, Packing, Protocol, Solver.
+  void
+  declare_die_parameters(dealii::ParameterHandler &prm);
+
+  /// Reads and cross-checks them; throws InputError naming the entry.
+  DieStudy
+  get_die_study(dealii::ParameterHandler &prm);
+} // namespace compax::cli

@@ -1,0 +1,105 @@
+// `compax die` through the real executable on a small bed: the columns the
+// issue promises, force balance of the punches at every converged state (a
+// frictionless die carries no axial load), the identities between the
+// elastic-recovery measures of Eq. (16), the parameter list of fits.csv, and
+// bad input.
+
+#include "app_test_support.h"
+
+#include <cmath>
+
+using compax::testing::AppTest;
+using compax::testing::Csv;
+
+namespace
+{
+  const std::string small_bed = "subsection Packing\n"
+                                " set Number of particles = 150\n"
+                                " set Die diameter = 3e-3\n"
+                                "end\n"
+                                "subsection Protocol\n"
+                                " set Final relative density = 0.8\n"
+                                " set Compaction steps = 16\n"
+                                " set Unloading points = 0.72, 0.8\n"
+                                "end\n";
+}
+
+class DieCommand : public AppTest
+{
+};
+
+TEST_F(DieCommand, SmallBedCompactsUnloadsAndEjects)
+{
+  write("small.prm", small_bed);
+  const auto r = compax("die small.prm -o out");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+
+  const Csv die(folder / "out" / "die.csv");
+  for (const char *column : {"stage",
+                             "branch",
+                             "relative_density",
+                             "upper_punch_force",
+                             "lower_punch_force",
+                             "die_wall_force",
+                             "coordination_number",
+                             "bonding_surface",
+                             "residual"})
+    EXPECT_NE(std::find(die.header.begin(), die.header.end(), column),
+              die.header.end())
+      << column;
+  ASSERT_GT(die.rows(), 20u);
+
+  // Frictionless die: at equilibrium the punches carry the same force.
+  const auto &upper = die.column.at("upper_punch_force");
+  const auto &lower = die.column.at("lower_punch_force");
+  double      peak  = 0;
+  for (double f : upper)
+    peak = std::max(peak, f);
+  ASSERT_GT(peak, 0.0);
+  for (std::size_t i = 0; i < die.rows(); ++i)
+    EXPECT_NEAR(upper[i], lower[i], 1e-4 * peak) << "row " << i;
+
+  // Eq. (16): eps_H = eps_rho / (1 - eps_rho) when the mass is fixed.
+  const Csv branches(folder / "out" / "branches.csv");
+  ASSERT_EQ(branches.rows(), 2u);
+  for (std::size_t b = 0; b < 2; ++b)
+    {
+      const double e_rho = branches.column.at("elastic_recovery_rho")[b];
+      EXPECT_GT(e_rho, 0.0);
+      EXPECT_NEAR(branches.column.at("elastic_recovery_H")[b],
+                  e_rho / (1 - e_rho),
+                  1e-9);
+      EXPECT_LT(branches.column.at("rho_min_in_die")[b],
+                branches.column.at("rho_max_in_die")[b]);
+    }
+
+  const std::string  fits = read(folder / "out" / "fits.csv");
+  std::string        names;
+  std::istringstream lines(fits);
+  for (std::string line; std::getline(lines, line);)
+    names += line.substr(0, line.find(',')) + ' ';
+  EXPECT_EQ(names,
+            "parameter Z_c rho_c_Z theta K_p beta_p eps_0 rho_c_eps "
+            "sigma_res_0 rho_c_e A_b0 rho_c_b E_0 n rho_c_E nu_tablet ");
+}
+
+TEST_F(DieCommand, UnloadingPointAboveFinalDensityIsRejected)
+{
+  write("bad.prm",
+        "subsection Protocol\n set Final relative density = 0.8\n"
+        " set Unloading points = 0.85\nend\n");
+  const auto r = compax("die bad.prm -o out");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("Unloading points"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("0.85"), std::string::npos) << r.err;
+  EXPECT_EQ(entries(), std::vector<std::string>{"bad.prm"});
+}
+
+TEST_F(DieCommand, DieNarrowerThanTwoParticlesIsRejected)
+{
+  write("bad.prm", "subsection Packing\n set Die diameter = 5e-4\nend\n");
+  const auto r = compax("die bad.prm -o out");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("Die diameter"), std::string::npos) << r.err;
+  EXPECT_EQ(entries(), std::vector<std::string>{"bad.prm"});
+}
