@@ -6,6 +6,7 @@
 #include "apps/cli/parameters.h"
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 
 #include <algorithm>
 #include <fstream>
@@ -94,8 +95,26 @@ namespace compax::cli
       return call;
     }
 
+    /**
+     * MPI (deal.II, Trilinos, the parallel HDF5 of checkpoints) starts only
+     * when a study runs, so that --help and --check answer at once; one
+     * thread per rank. It finalizes when the program exits.
+     */
+    void
+    start_mpi(int &argc, char **&argv)
+    {
+      static std::unique_ptr<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+      if (!mpi)
+        mpi = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc,
+                                                                         argv,
+                                                                         1);
+    }
+
     int
-    run_command(const Command &command, const std::vector<std::string> &words)
+    run_command(const Command                  &command,
+                const std::vector<std::string> &words,
+                int                            &argc,
+                char                         **&argv)
     {
       const Invocation call = parse_arguments(command.name(), words);
 
@@ -135,6 +154,7 @@ namespace compax::cli
           return success;
         }
 
+      start_mpi(argc, argv);
       OutputDirectory output(call.output.value_or(command.name() + "-output"));
       std::ofstream(output.staging() / "parameters.prm") << [&] {
         std::ostringstream used;
@@ -164,7 +184,7 @@ namespace compax::cli
   } // namespace
 
   int
-  run_application(const int argc, char **argv)
+  run_application(int argc, char **argv)
   {
     const auto               commands = all_commands();
     std::vector<std::string> words(argv + 1, argv + argc);
@@ -185,7 +205,10 @@ namespace compax::cli
           if (command->name() == words[0])
             {
               context += " " + command->name();
-              return run_command(*command, {words.begin() + 1, words.end()});
+              return run_command(*command,
+                                 {words.begin() + 1, words.end()},
+                                 argc,
+                                 argv);
             }
         throw InputError("unknown command '" + words[0]
                          + "' (see 'compax --help')");

@@ -1,0 +1,30 @@
+#pragma once
+
+#include "coupling/hdf5_archive.h"
+#include "dem/solver/bed.h"
+#include "dem/solver/contact_model.h"
+
+#include <string>
+
+namespace compax::cli
+{
+  /**
+   * Saves a bed state into an HDF5 archive under `group`: particle
+   * positions, radii and materials, the die walls, the Verlet skin, and the
+   * internal variables (a_p, a_B) of every contact that has any. The contact
+   * laws are not stored: they follow from the materials and the
+   * ContactModel when the bed is loaded.
+   */
+  void
+  save_bed(coupling::Hdf5ArchiveWriter &archive,
+           const std::string           &group,
+           const dem::Bed              &bed);
+
+  /// Restores a bed saved by save_bed(); the contact list is rebuilt with
+  /// the saved histories merged in, so positions and internal variables are
+  /// exactly those saved.
+  dem::Bed
+  load_bed(const coupling::Hdf5ArchiveReader &archive,
+           const std::string                 &group,
+           const dem::ContactModel           &model);
+} // namespace compax::cli
