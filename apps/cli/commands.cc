@@ -1,6 +1,7 @@
 #include "apps/cli/commands.h"
 
 #include "apps/contact/contact_command.h"
+#include "apps/crystal/crystal_command.h"
 #include "apps/die/die_command.h"
 
 namespace compax::cli
@@ -11,6 +12,7 @@ namespace compax::cli
     std::vector<std::unique_ptr<Command>> commands;
     commands.push_back(make_contact_command());
     commands.push_back(make_die_command());
+    commands.push_back(make_crystal_command());
     return commands;
   }
 } // namespace compax::cli

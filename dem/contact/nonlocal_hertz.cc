@@ -234,11 +234,17 @@ namespace compax::dem
             double sum = 0.0;
             for (std::size_t q = offset[c]; q < offset[c + 1]; ++q)
               sum += compliance[q] * force[other[q]];
-            change      = std::max(change, std::abs(sum - gamma_nl[c]));
+            // Written so that a NaN (a diverging iteration beyond the limit
+            // point of Eq. 10) propagates instead of being skipped by max.
+            const double step = std::abs(sum - gamma_nl[c]);
+            if (!(step <= change))
+              change = step;
             gamma_nl[c] = sum;
           }
         ++result.iterations;
         result.change = change;
+        if (!std::isfinite(change))
+          break;
         if (change < tolerance)
           {
             result.converged = true;

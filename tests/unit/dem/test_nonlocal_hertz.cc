@@ -522,3 +522,25 @@ namespace
       EXPECT_NEAR(force3[c], force[c], 1e-13 * force[c]);
   }
 } // namespace
+
+TEST(NonlocalFixedPoint, DivergenceBeyondTheLimitPointIsNotConvergence)
+{
+  // Two contacts that load each other (one particle between them): with
+  // w n_H large and a large overlap the fixed point of Eq. (10) has no
+  // solution and the iteration runs off to infinity; it must say so.
+  NonlocalContactNetwork network;
+  network.add_contact(1.0);
+  network.add_influence(1, 1.0);
+  network.add_contact(1.0);
+  network.add_influence(0, 1.0);
+  std::vector<double> gamma{1.0, 1.0}, gamma_nl, force;
+  const auto result =
+    solve_nonlocal_fixed_point(network, gamma, gamma_nl, force, 1e-12, 200);
+  EXPECT_FALSE(result.converged);
+
+  // Below the limit point the same network converges.
+  std::vector<double> small{1e-4, 1e-4};
+  EXPECT_TRUE(
+    solve_nonlocal_fixed_point(network, small, gamma_nl, force, 1e-16, 200)
+      .converged);
+}
