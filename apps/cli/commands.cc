@@ -3,6 +3,8 @@
 #include "apps/contact/contact_command.h"
 #include "apps/crystal/crystal_command.h"
 #include "apps/die/die_command.h"
+#include "apps/mcdem/calibrate_command.h"
+#include "apps/mcdem/mcdem_command.h"
 
 namespace compax::cli
 {
@@ -13,6 +15,8 @@ namespace compax::cli
     commands.push_back(make_contact_command());
     commands.push_back(make_die_command());
     commands.push_back(make_crystal_command());
+    commands.push_back(make_mcdem_command());
+    commands.push_back(make_calibrate_command());
     return commands;
   }
 } // namespace compax::cli
