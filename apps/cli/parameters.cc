@@ -162,6 +162,14 @@ namespace compax::cli
     return values;
   }
 
+  std::string
+  format_number(const double value)
+  {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+  }
+
   void
   reject_entry(const std::string &name,
                const std::string &value,

@@ -79,6 +79,10 @@ namespace compax::cli
   std::vector<double>
   get_real_list(dealii::ParameterHandler &prm, const std::string &name);
 
+  /// A number as a .prm or message shows it ("5e+09", "0.25").
+  std::string
+  format_number(double value);
+
   /// Throws an InputError "entry 'name' = value: message" for checks that
   /// involve several entries.
   [[noreturn]] void

@@ -6,56 +6,45 @@
 
 namespace compax::cli
 {
-  namespace
-  {
-    std::string
-    text(const double value)
-    {
-      std::ostringstream out;
-      out << value;
-      return out.str();
-    }
-  } // namespace
-
   void
   declare_particle_material(dealii::ParameterHandler &prm,
                             const ParticleDefaults   &defaults)
   {
     declare_quantity(prm,
                      "Radius",
-                     text(defaults.radius),
+                     format_number(defaults.radius),
                      positive(),
                      "m",
                      "Particle radius R.");
     declare_quantity(prm,
                      "Young's modulus",
-                     text(defaults.youngs_modulus),
+                     format_number(defaults.youngs_modulus),
                      positive(),
                      "Pa",
                      "Young's modulus E of the particle material.");
     declare_quantity(prm,
                      "Poisson's ratio",
-                     text(defaults.poisson_ratio),
+                     format_number(defaults.poisson_ratio),
                      open(-1.0, 0.5),
                      "-",
                      "Poisson's ratio nu, in (-1, 0.5).");
     declare_quantity(prm,
                      "Plastic stiffness",
-                     text(defaults.plastic_stiffness),
+                     format_number(defaults.plastic_stiffness),
                      positive(),
                      "Pa",
                      "Plastic stiffness kappa of the power-law hardening "
                      "sigma = kappa epsilon^(1/m) (Gonzalez 2018, Sec. 2).");
     declare_quantity(prm,
                      "Plastic exponent",
-                     text(defaults.plastic_exponent),
+                     format_number(defaults.plastic_exponent),
                      RealInterval(1.0, false, 1e3, false),
                      "-",
                      "Plastic law exponent m >= 1 (m = 1: linear hardening; "
                      "large m: perfectly plastic).");
     declare_quantity(prm,
                      "Surface energy",
-                     text(defaults.surface_energy),
+                     format_number(defaults.surface_energy),
                      non_negative(),
                      "J/m^2",
                      "Interfacial fracture energy omega of the material, "

@@ -19,13 +19,6 @@ namespace compax::cli
     using dem::CrystalConfiguration;
     using dem::CrystalFormulation;
 
-    std::string
-    text(const double value)
-    {
-      std::ostringstream out;
-      out << value;
-      return out.str();
-    }
 
     /// A comma-separated entry as its non-empty items.
     std::vector<std::string>
@@ -115,9 +108,9 @@ namespace compax::cli
                                    .relative_density(Eigen::Vector3d::Zero());
             if (!(study.max_density > start * (1.0 + 1e-9)))
               reject_entry("Maximum relative density",
-                           text(study.max_density),
-                           "must exceed the undeformed density " + text(start)
-                             + " of the BCC crystal");
+                           format_number(study.max_density),
+                           "must exceed the undeformed density "
+                             + format_number(start) + " of the BCC crystal");
           }
       return study;
     }
@@ -145,7 +138,7 @@ namespace compax::cli
     std::string
     density_text(const double value)
     {
-      return std::isnan(value) ? "none" : text(value);
+      return std::isnan(value) ? "none" : format_number(value);
     }
 
     class CrystalCommand : public Command
@@ -488,7 +481,8 @@ namespace compax::cli
           = dem::make_crystal_lattice(configuration, 1.0);
         const std::string file = "'" + name + ".csv'";
         const auto select = [](const double nu, const std::string &column) {
-          return "(abs($1-(" + text(nu) + "))<1e-9 ? $" + column + " : 1/0)";
+          return "(abs($1-(" + format_number(nu) + "))<1e-9 ? $" + column
+                 + " : 1/0)";
         };
 
         // Load and lateral reactions at the material's Poisson's ratio.
@@ -498,8 +492,8 @@ namespace compax::cli
                              "set ylabel 'force on the cell face [N]'\n"
                              "set key top left\n"
                              "set title '"
-                           + name + ", nu = " + text(nu) + "'\nplot " + file
-                           + " using " + x + ":" + select(nu, "4")
+                           + name + ", nu = " + format_number(nu) + "'\nplot "
+                           + file + " using " + x + ":" + select(nu, "4")
                            + " with lines dt 2 lw 2 lc 'black' title 'load, "
                              "Hertz', '' using "
                            + x + ":" + select(nu, "8")
@@ -528,8 +522,8 @@ namespace compax::cli
         for (std::size_t i = 0; i < curves.size(); ++i)
           discrepancy += std::string(i ? ", " : "") + (i ? "''" : file)
                          + " using " + x + ":" + select(curves[i].nu, "12")
-                         + " with lines lw 2 title 'nu = " + text(curves[i].nu)
-                         + "'";
+                         + " with lines lw 2 title 'nu = "
+                         + format_number(curves[i].nu) + "'";
         render_png(folder,
                    name + "_discrepancy.gp",
                    discrepancy + "\n",

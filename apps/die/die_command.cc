@@ -17,13 +17,6 @@ namespace compax::cli
 {
   namespace
   {
-    std::string
-    text(const double value)
-    {
-      std::ostringstream out;
-      out << value;
-      return out.str();
-    }
 
     /// One row per unloading branch: the densities, recoveries and
     /// pressures of Gonzalez 2018 Secs. 5.3-5.7.
@@ -149,9 +142,9 @@ namespace compax::cli
         std::cout << "  initial in-die relative density " << rho_0 << std::endl;
         if (study.final_density <= rho_0)
           reject_entry("Protocol/Final relative density",
-                       text(study.final_density),
+                       format_number(study.final_density),
                        "must exceed the packing's relative density "
-                         + text(rho_0));
+                         + format_number(rho_0));
         study.protocol.compaction_targets
           = dem::density_targets(rho_0,
                                  study.final_density,

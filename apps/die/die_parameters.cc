@@ -8,17 +8,6 @@
 
 namespace compax::cli
 {
-  namespace
-  {
-    std::string
-    text(const double value)
-    {
-      std::ostringstream out;
-      out << value;
-      return out.str();
-    }
-  } // namespace
-
   void
   declare_die_parameters(dealii::ParameterHandler &prm)
   {
@@ -214,15 +203,15 @@ namespace compax::cli
     deposition.seed = static_cast<std::uint64_t>(prm.get_integer("Seed"));
     if (deposition.die_diameter <= 4 * radius)
       reject_entry("Packing/Die diameter",
-                   text(deposition.die_diameter),
+                   format_number(deposition.die_diameter),
                    "the die must be wider than two particle diameters (> "
-                     + text(4 * radius) + " m)");
+                     + format_number(4 * radius) + " m)");
     if (deposition.sizes.log_sigma > 0
         && deposition.sizes.min_radius >= deposition.sizes.max_radius)
       reject_entry("Packing/Minimum radius",
-                   text(deposition.sizes.min_radius),
+                   format_number(deposition.sizes.min_radius),
                    "must be below the Maximum radius ("
-                     + text(deposition.sizes.max_radius) + " m)");
+                     + format_number(deposition.sizes.max_radius) + " m)");
     prm.leave_subsection();
 
     prm.enter_subsection("Protocol");
@@ -233,10 +222,10 @@ namespace compax::cli
     for (const double u : protocol.unloading_points)
       if (u <= 0.0 || u > final_density)
         reject_entry("Protocol/Unloading points",
-                     text(u),
+                     format_number(u),
                      "each unloading point must lie in (0, Final relative "
                      "density = "
-                       + text(final_density) + "]");
+                       + format_number(final_density) + "]");
     protocol.unloading_step = prm.get_double("Unloading step");
     protocol.eject          = prm.get_bool("Eject");
     protocol.friction_coefficient

@@ -8,17 +8,6 @@
 
 namespace compax::cli
 {
-  namespace
-  {
-    std::string
-    text(const double value)
-    {
-      std::ostringstream out;
-      out << value;
-      return out.str();
-    }
-  } // namespace
-
   void
   declare_mcdem_parameters(dealii::ParameterHandler &prm,
                            const double              mass_scaling,
@@ -218,7 +207,7 @@ namespace compax::cli
                      "Free relaxation after the growth.");
     declare_quantity(prm,
                      "Strain rate",
-                     text(strain_rate),
+                     format_number(strain_rate),
                      positive(),
                      "1/s",
                      "Engineering strain rate of the top plate, compression "
@@ -267,7 +256,7 @@ namespace compax::cli
                      "to k2/k1 times stiffer than Hertz).");
     declare_quantity(prm,
                      "Mass scaling",
-                     text(mass_scaling),
+                     format_number(mass_scaling),
                      RealInterval(1.0, false, 1e6, false),
                      "-",
                      "Factor on all masses and inertias (density scaling for "
@@ -316,12 +305,12 @@ namespace compax::cli
     prm.leave_subsection();
     if (!(x10 < x50 && x50 < x90))
       reject_entry("Particle size distribution/x50",
-                   text(x50),
+                   format_number(x50),
                    "need x10 < x50 < x90");
     if (!(d_max > d_min))
       reject_entry("Particle size distribution/Maximum diameter",
-                   text(d_max),
-                   "must exceed the minimum diameter " + text(d_min));
+                   format_number(d_max),
+                   "must exceed the minimum diameter " + format_number(d_min));
     const auto fit           = dem::fit_volume_log_normal(x10, x50, x90);
     s.fitted_median_diameter = fit.median_diameter;
     s.fitted_log_sigma       = fit.log_sigma;
@@ -337,9 +326,9 @@ namespace compax::cli
     for (const double L : s.cell_sizes)
       if (s.rve.particle_count == 0 && !(L > 1.05 * d_max))
         reject_entry("Cell/Cell sizes",
-                     text(L),
+                     format_number(L),
                      "every cell must be wider than the maximum diameter "
-                       + text(d_max) + " m (with 5% room)");
+                       + format_number(d_max) + " m (with 5% room)");
     s.rve.cell_size = s.cell_sizes.front();
 
     prm.enter_subsection("Protocol");
