@@ -7,15 +7,15 @@ namespace compax::dem
   BedMeasures
   measure(const Bed &bed)
   {
-    BedMeasures     m;
-    std::size_t     loaded = 0;
-    double          ap2 = 0.0, r2 = 0.0;
-    const auto     &p = bed.particles;
+    BedMeasures m;
+    std::size_t loaded = 0;
+    double      ap2 = 0.0, r2 = 0.0;
+    const auto &p = bed.particles;
     for (const PairContact &c : bed.contacts.pairs)
       {
-        const double P =
-          c.law.response(pair_overlap(p, c), c.history.a_p, c.history.a_B)
-            .force;
+        const double P
+          = c.law.response(pair_overlap(p, c), c.history.a_p, c.history.a_B)
+              .force;
         if (P != 0.0)
           ++loaded;
         m.n_tensile += P < 0.0;
@@ -77,7 +77,7 @@ namespace compax::dem
     TabletElasticity t;
     if (axial.empty())
       return t;
-    const double s_max = *std::max_element(axial.begin(), axial.end());
+    const double        s_max = *std::max_element(axial.begin(), axial.end());
     std::vector<double> e, sz, sr;
     for (std::size_t i = 0; i < axial.size(); ++i)
       if (axial[i] >= s_max / 3.0 && axial[i] <= 2.0 * s_max / 3.0)
@@ -89,8 +89,8 @@ namespace compax::dem
     t.n_points = static_cast<int>(e.size());
     if (e.size() < 2)
       return t;
-    const double M = -slope(e, sz); // stress drops as the strain grows
-    const double k = slope(sz, sr);
+    const double M   = -slope(e, sz); // stress drops as the strain grows
+    const double k   = slope(sz, sr);
     t.poisson_ratio  = k / (1.0 + k);
     const double nu  = t.poisson_ratio;
     t.youngs_modulus = M * (1.0 + nu) * (1.0 - 2.0 * nu) / (1.0 - nu);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
@@ -30,21 +29,50 @@ namespace compax::dem
       return bed.particles.solid_volume() / (bed.walls.punch_area() * rho);
     }
 
-    /// Relative density of the tablet out of the die: solid volume over the
-    /// cylinder that encloses the spheres.
+    /**
+     * Volume of the cylinder that envelops a compact: its radius is the
+     * mean over angular and height sectors (about one diameter wide) of
+     * the outermost sphere surface max(r_i + R_i), its height the axial
+     * extent of the spheres. Averaging over sectors keeps a few protruding
+     * surface spheres from widening the cylinder.
+     */
     double
-    tablet_density(const Bed &bed)
+    envelope_volume(const Bed &bed)
     {
-      const auto &p = bed.particles;
-      double      r = 0.0, z_lo = 1e300, z_hi = -1e300;
+      const auto  &p    = bed.particles;
+      const double d    = 2.0 * p.mean_radius();
+      double       z_lo = 1e300, z_hi = -1e300, r_max = 0.0;
       for (std::size_t i = 0; i < p.size(); ++i)
         {
           const auto &x = p.positions[i];
-          r    = std::max(r, std::hypot(x[0], x[1]) + p.radii[i]);
-          z_lo = std::min(z_lo, x[2] - p.radii[i]);
-          z_hi = std::max(z_hi, x[2] + p.radii[i]);
+          z_lo          = std::min(z_lo, x[2] - p.radii[i]);
+          z_hi          = std::max(z_hi, x[2] + p.radii[i]);
+          r_max         = std::max(r_max, std::hypot(x[0], x[1]) + p.radii[i]);
         }
-      return p.solid_volume() / (pi * r * r * (z_hi - z_lo));
+      const int n_theta = std::max(8, static_cast<int>(2 * pi * r_max / d));
+      const int n_z     = std::max(1, static_cast<int>((z_hi - z_lo) / d));
+      std::vector<double> outer(static_cast<std::size_t>(n_theta) * n_z, 0.0);
+      for (std::size_t i = 0; i < p.size(); ++i)
+        {
+          const auto  &x = p.positions[i];
+          const double t = (std::atan2(x[1], x[0]) + pi) / (2 * pi);
+          const int    a = std::min(n_theta - 1, static_cast<int>(t * n_theta));
+          const int    b
+            = std::min(n_z - 1,
+                       static_cast<int>((x[2] - z_lo) / (z_hi - z_lo) * n_z));
+          double &o = outer[static_cast<std::size_t>(b) * n_theta + a];
+          o         = std::max(o, std::hypot(x[0], x[1]) + p.radii[i]);
+        }
+      double sum = 0.0;
+      int    n   = 0;
+      for (const double o : outer)
+        if (o > 0.0)
+          {
+            sum += o;
+            ++n;
+          }
+      const double r = n > 0 ? sum / n : r_max;
+      return pi * r * r * (z_hi - z_lo);
     }
   } // namespace
 
@@ -52,10 +80,10 @@ namespace compax::dem
                                const ContactModel &model,
                                DieProtocol         protocol_,
                                EquilibriumOptions  equilibrium)
-    : path(std::move(bed))
-    , model(model)
-    , protocol(std::move(protocol_))
-    , stepper(model, equilibrium)
+      : path(std::move(bed))
+      , model(model)
+      , protocol(std::move(protocol_))
+      , stepper(model, equilibrium)
   {
     auto &t = protocol.compaction_targets;
     t.insert(t.end(),
@@ -80,15 +108,18 @@ namespace compax::dem
   }
 
   void
-  DieCompaction::check(const LoadStepResult &r, const std::string &what) const
+  DieCompaction::check(const LoadStepResult &r, const std::string &what)
   {
     if (!r.converged)
       {
         std::ostringstream s;
         s << "die protocol: equilibrium failed during " << what
           << " (relative residual " << r.last.relative_residual << " after "
-          << r.cutbacks << " cut-backs)";
-        throw std::runtime_error(s.str());
+          << r.cutbacks << " cut-backs); the last converged state is kept";
+        failure_message = s.str();
+        if (progress)
+          *progress << failure_message << std::endl;
+        throw std::runtime_error(failure_message);
       }
   }
 
@@ -104,21 +135,23 @@ namespace compax::dem
     assemblies += r.assemblies;
     newton_iterations += r.iterations;
     cg_iterations += r.cg_iterations;
+    fire_iterations += r.fire_iterations;
+    fire_seconds += r.fire_seconds;
 
     DieRecord d;
-    d.stage             = stage;
-    d.branch            = branch;
-    d.step              = step;
-    d.punch_gap         = bed.walls.height();
-    d.relative_density  = bed.relative_density();
-    const auto &s       = r.last.sums;
-    d.upper_punch_force = s.wall_force[int(Wall::upper_punch)];
-    d.lower_punch_force = s.wall_force[int(Wall::lower_punch)];
-    d.die_wall_force    = s.wall_force[int(Wall::die)];
+    d.stage                = stage;
+    d.branch               = branch;
+    d.step                 = step;
+    d.punch_gap            = bed.walls.height();
+    d.relative_density     = bed.relative_density();
+    const auto &s          = r.last.sums;
+    d.upper_punch_force    = s.wall_force[int(Wall::upper_punch)];
+    d.lower_punch_force    = s.wall_force[int(Wall::lower_punch)];
+    d.die_wall_force       = s.wall_force[int(Wall::die)];
     d.upper_punch_pressure = d.upper_punch_force / bed.walls.punch_area();
     d.lower_punch_pressure = d.lower_punch_force / bed.walls.punch_area();
-    d.die_wall_pressure =
-      bed.walls.die_present ? d.die_wall_force / bed.walls.wall_area() : 0.0;
+    d.die_wall_pressure
+      = bed.walls.die_present ? d.die_wall_force / bed.walls.wall_area() : 0.0;
     const BedMeasures m   = measure(bed);
     d.coordination_number = m.coordination_number;
     d.bonding_surface     = m.bonding_surface;
@@ -126,6 +159,7 @@ namespace compax::dem
     d.bonds_formed        = r.bonds.formed;
     d.bonds_broken        = r.bonds.broken;
     d.residual            = r.last.relative_residual;
+    d.mean_contact_force  = s.mean_force;
     d.iterations          = r.iterations;
     d.cg_iterations       = r.cg_iterations;
     d.cutbacks            = r.cutbacks;
@@ -134,9 +168,10 @@ namespace compax::dem
   }
 
   void
-  DieCompaction::emit(const DieRecord &r)
+  DieCompaction::emit(const DieRecord &r, const Bed &state)
   {
     rows.push_back(r);
+    last_good = state;
     if (csv)
       {
         write_csv_row(*csv, r);
@@ -159,17 +194,29 @@ namespace compax::dem
       Eigen::VectorXd  F;
       initial.last.sums = a.residual(path, model, F);
     }
-    DieRecord r0 = record(path, "compaction", 0, 0, initial);
+    DieRecord r0      = record(path, "compaction", 0, 0, initial);
     r0.rho_max_in_die = r0.relative_density;
-    emit(r0);
+    emit(r0, path);
+    failure_message.clear();
+    if (protocol.consolidate)
+      consolidate();
 
     const auto &targets = protocol.compaction_targets;
     int         branch  = 0;
     for (std::size_t k = 0; k < targets.size(); ++k)
       {
         if (targets[k] <= path.relative_density() * (1 + 1e-12))
-          continue;
-        compact_to(targets[k], static_cast<int>(k + 1),
+          {
+            for (const double u : protocol.unloading_points)
+              if (std::abs(u - targets[k]) < 1e-12 && progress)
+                *progress << "unloading point " << u
+                          << " lies below the jamming density "
+                          << path.relative_density() << ": skipped"
+                          << std::endl;
+            continue;
+          }
+        compact_to(targets[k],
+                   static_cast<int>(k + 1),
                    static_cast<int>(targets.size()));
         for (const double u : protocol.unloading_points)
           if (std::abs(u - targets[k]) < 1e-12)
@@ -178,18 +225,48 @@ namespace compax::dem
   }
 
   void
+  DieCompaction::consolidate()
+  {
+    const auto &targets = protocol.compaction_targets;
+    if (targets.empty())
+      return;
+    Consolidation             c(protocol.consolidation);
+    const ConsolidationResult r = c.run(path, model, targets.back());
+    consolidation_seconds += r.seconds;
+    consolidation_iterations += r.iterations;
+    assemblies += r.assemblies;
+    rho_jammed = r.jammed ? path.relative_density() : 0.0;
+    if (progress)
+      *progress << "consolidation: " << (r.jammed ? "jammed" : "not jammed")
+                << " at rho " << std::setprecision(4) << path.relative_density()
+                << ", punch "
+                << r.sums.wall_force[int(Wall::upper_punch)]
+                     / path.walls.punch_area() / 1e6
+                << " MPa, " << r.increments << " increments, " << r.iterations
+                << " relaxation iterations, " << std::setprecision(3)
+                << r.seconds << " s" << std::defaultfloat << std::endl;
+    if (r.failed)
+      {
+        failure_message = "die protocol: consolidation failed to relax the "
+                          "bed; the last relaxed state is kept";
+        last_good       = path;
+        throw std::runtime_error(failure_message);
+      }
+  }
+
+  void
   DieCompaction::compact_to(const double rho, const int step, const int n_steps)
   {
-    DieWalls target    = path.walls;
-    target.upper_punch = path.walls.lower_punch + gap_for(path, rho);
-    const double t0    = now();
-    const LoadStepResult r = stepper.advance(path, target);
-    std::ostringstream what;
+    DieWalls target         = path.walls;
+    target.upper_punch      = path.walls.lower_punch + gap_for(path, rho);
+    const double         t0 = now();
+    const LoadStepResult r  = stepper.advance(path, target);
+    std::ostringstream   what;
     what << "compaction to relative density " << rho;
     check(r, what.str());
     DieRecord d      = record(path, "compaction", 0, step, r);
     d.rho_max_in_die = d.relative_density;
-    emit(d);
+    emit(d, path);
     if (progress)
       {
         const double elapsed = now() - start_time;
@@ -198,11 +275,10 @@ namespace compax::dem
                   << "  rho " << std::fixed << std::setprecision(4)
                   << d.relative_density << "  punch " << std::setprecision(2)
                   << d.upper_punch_pressure / 1e6 << " MPa  Z "
-                  << d.coordination_number << "  it " << r.iterations
-                  << " (cg " << r.cg_iterations << ", cut " << r.cutbacks
-                  << ")  " << std::setprecision(1) << now() - t0
-                  << " s  left ~" << left << " s" << std::defaultfloat
-                  << std::endl;
+                  << d.coordination_number << "  it " << r.iterations << " (cg "
+                  << r.cg_iterations << ", cut " << r.cutbacks << ")  "
+                  << std::setprecision(1) << now() - t0 << " s  left ~" << left
+                  << " s" << std::defaultfloat << std::endl;
       }
   }
 
@@ -211,17 +287,17 @@ namespace compax::dem
   {
     Bed           bed = path; // the saved state of the compaction path
     BranchSummary s;
-    s.branch         = branch;
-    s.rho_max_in_die = bed.relative_density();
-    const double H_max = bed.walls.height();
-    s.max_punch_pressure = rows.back().upper_punch_pressure;
-    s.coordination_compacted  = rows.back().coordination_number;
+    s.branch                    = branch;
+    s.rho_max_in_die            = bed.relative_density();
+    const double H_max          = bed.walls.height();
+    s.max_punch_pressure        = rows.back().upper_punch_pressure;
+    s.coordination_compacted    = rows.back().coordination_number;
     s.bonding_surface_compacted = rows.back().bonding_surface;
 
     std::vector<double> strain{0.0}, axial{rows.back().upper_punch_pressure},
       radial{rows.back().die_wall_pressure};
-    double F_prev = rows.back().upper_punch_force, H_prev = H_max;
-    double H_min  = H_max;
+    double    F_prev = rows.back().upper_punch_force, H_prev = H_max;
+    double    H_min = H_max;
     DieRecord last;
     for (int step = 1;; ++step)
       {
@@ -240,56 +316,69 @@ namespace compax::dem
             // The punch separated within this step: interpolate the gap
             // at which its force vanished.
             const double F = d.upper_punch_force;
-            H_min = F_prev > F ? H_prev + (H - H_prev) * F_prev / (F_prev - F) :
-                                 H;
-            s.rho_min_in_die = bed.particles.solid_volume()
-                               / (bed.walls.punch_area() * H_min);
-            s.elastic_recovery_rho =
-              (s.rho_max_in_die - s.rho_min_in_die) / s.rho_max_in_die;
+            H_min
+              = F_prev > F ? H_prev + (H - H_prev) * F_prev / (F_prev - F) : H;
+            s.rho_min_in_die
+              = bed.particles.solid_volume() / (bed.walls.punch_area() * H_min);
+            s.elastic_recovery_rho
+              = (s.rho_max_in_die - s.rho_min_in_die) / s.rho_max_in_die;
             s.elastic_recovery_H = (H_min - H_max) / H_max;
-            s.residual_radial_pressure =
-              d.die_wall_force / (pi * bed.walls.diameter * H_min);
+            s.residual_radial_pressure
+              = d.die_wall_force / (pi * bed.walls.diameter * H_min);
             s.bonding_surface_unloaded = d.bonding_surface;
             d.rho_min_in_die           = s.rho_min_in_die;
             d.elastic_recovery_rho     = s.elastic_recovery_rho;
             d.elastic_recovery_H       = s.elastic_recovery_H;
             d.residual_radial_pressure = s.residual_radial_pressure;
-            emit(d);
+            emit(d, bed);
             last = d;
             break;
           }
-        emit(d);
-        if (progress && std::getenv("COMPAX_DIE_VERBOSE"))
-          *progress << "  unloading step " << step << " F " << d.upper_punch_force
-                    << " it " << r.iterations << " cg " << r.cg_iterations
-                    << " fire " << r.last.fire_iterations << std::endl;
+        emit(d, bed);
+        if (progress && protocol.verbose)
+          *progress << "  unloading step " << step << " F "
+                    << d.upper_punch_force << " it " << r.iterations << " cg "
+                    << r.cg_iterations << " fire " << r.fire_iterations
+                    << std::endl;
         F_prev = d.upper_punch_force;
         H_prev = H;
       }
     s.tablet = unloading_elasticity(strain, axial, radial);
+    // The compact's envelope at C, where its volume is known (punch gap
+    // H_min times the die cross-section).
+    const double envelope = envelope_volume(bed);
     if (progress)
-      *progress << std::setprecision(4) << "unloading branch " << branch << ": rho_max "
-                << s.rho_max_in_die << "  rho_min " << s.rho_min_in_die
-                << "  recovery " << 100 * s.elastic_recovery_rho
-                << " %  residual radial " << s.residual_radial_pressure / 1e6
-                << " MPa" << std::endl;
+      *progress << std::setprecision(4) << "unloading branch " << branch
+                << ": rho_max " << s.rho_max_in_die << "  rho_min "
+                << s.rho_min_in_die << "  recovery "
+                << 100 * s.elastic_recovery_rho << " %  residual radial "
+                << s.residual_radial_pressure / 1e6 << " MPa" << std::endl;
     if (protocol.eject)
-      eject(bed, branch, s);
+      eject(bed, branch, s, envelope);
     summaries.push_back(s);
   }
 
   void
-  DieCompaction::eject(Bed &bed, const int branch, BranchSummary &s)
+  DieCompaction::eject(Bed           &bed,
+                       const int      branch,
+                       BranchSummary &s,
+                       const double   envelope_in_die)
   {
-    // The upper punch is lifted clear; the die wall then opens in steps.
+    // Out of the die the compact is free radially: its volume is the in-die
+    // volume at C scaled by the change of its envelope volume (same
+    // definition before and after, so surface roughness cancels).
+    auto tablet_density = [&](const Bed &b) {
+      return s.rho_min_in_die * envelope_in_die / envelope_volume(b);
+    };
+    // The upper punch stays where it stopped carrying force (so that loose
+    // surface particles are not lost); the die wall then opens in steps.
     // Ejection pressure (Sec. 5.4): mu times the radial wall force over
     // the punch area, largest at the start of ejection.
-    const double area  = bed.walls.punch_area();
-    const double F_die = rows.back().die_wall_force;
+    const double area   = bed.walls.punch_area();
+    const double F_die  = rows.back().die_wall_force;
     s.ejection_pressure = protocol.friction_coefficient * F_die / area;
     const double D0     = bed.walls.diameter;
     DieWalls     w      = bed.walls;
-    w.upper_punch += 0.2 * bed.walls.height();
     for (int step = 1; step <= protocol.max_ejection_steps + 1; ++step)
       {
         const bool remove = step > protocol.max_ejection_steps;
@@ -305,25 +394,26 @@ namespace compax::dem
         d.elastic_recovery_rho     = s.elastic_recovery_rho;
         d.elastic_recovery_H       = s.elastic_recovery_H;
         d.residual_radial_pressure = s.residual_radial_pressure;
-        d.ejection_pressure =
-          protocol.friction_coefficient * d.die_wall_force / area;
+        d.ejection_pressure
+          = protocol.friction_coefficient * d.die_wall_force / area;
         d.rho_tablet = tablet_density(bed);
-        emit(d);
-        if (progress && std::getenv("COMPAX_DIE_VERBOSE"))
-          *progress << "  ejection step " << step << " F_die " << d.die_wall_force
-                    << " it " << r.iterations << " cg " << r.cg_iterations
-                    << " fire " << r.last.fire_iterations << std::endl;
+        emit(d, bed);
+        if (progress && protocol.verbose)
+          *progress << "  ejection step " << step << " F_die "
+                    << d.die_wall_force << " it " << r.iterations << " cg "
+                    << r.cg_iterations << " fire " << r.fire_iterations
+                    << std::endl;
         if (d.die_wall_force == 0.0 && !remove)
           {
             // The tablet left the wall: remove it.
-            w.die_present = false;
+            w.die_present           = false;
             const LoadStepResult rf = stepper.advance(bed, w);
             check(rf, "ejection");
-            DieRecord f  = record(bed, "ejection", branch, step + 1, rf);
+            DieRecord f      = record(bed, "ejection", branch, step + 1, rf);
             f.rho_max_in_die = s.rho_max_in_die;
             f.rho_min_in_die = s.rho_min_in_die;
             f.rho_tablet     = tablet_density(bed);
-            emit(f);
+            emit(f, bed);
             break;
           }
         if (remove)
@@ -332,10 +422,10 @@ namespace compax::dem
     s.rho_tablet              = rows.back().rho_tablet;
     s.bonding_surface_ejected = rows.back().bonding_surface;
     if (progress)
-      *progress << std::setprecision(4) << "ejection branch " << branch << ": ejection pressure "
-                << s.ejection_pressure / 1e6 << " MPa (mu "
-                << protocol.friction_coefficient << ")  rho_tablet "
-                << s.rho_tablet << std::endl;
+      *progress << std::setprecision(4) << "ejection branch " << branch
+                << ": ejection pressure " << s.ejection_pressure / 1e6
+                << " MPa (mu " << protocol.friction_coefficient
+                << ")  rho_tablet " << s.rho_tablet << std::endl;
   }
 
   void
@@ -356,16 +446,16 @@ namespace compax::dem
     const auto old = out.precision(10);
     out << r.stage << ',' << r.branch << ',' << r.step << ',' << r.punch_gap
         << ',' << r.relative_density << ',' << r.rho_max_in_die << ','
-        << r.rho_min_in_die << ',' << r.rho_tablet << ','
-        << r.upper_punch_force << ',' << r.lower_punch_force << ','
-        << r.die_wall_force << ',' << r.upper_punch_pressure << ','
-        << r.lower_punch_pressure << ',' << r.die_wall_pressure << ','
-        << r.coordination_number << ',' << r.bonding_surface << ','
-        << r.bonds << ',' << r.bonds_formed << ',' << r.bonds_broken << ','
-        << r.elastic_recovery_rho << ',' << r.elastic_recovery_H << ','
-        << r.residual_radial_pressure << ',' << r.ejection_pressure << ','
-        << r.residual << ',' << r.iterations << ',' << r.cg_iterations << ','
-        << r.cutbacks << ',' << r.wall_seconds << '\n';
+        << r.rho_min_in_die << ',' << r.rho_tablet << ',' << r.upper_punch_force
+        << ',' << r.lower_punch_force << ',' << r.die_wall_force << ','
+        << r.upper_punch_pressure << ',' << r.lower_punch_pressure << ','
+        << r.die_wall_pressure << ',' << r.coordination_number << ','
+        << r.bonding_surface << ',' << r.bonds << ',' << r.bonds_formed << ','
+        << r.bonds_broken << ',' << r.elastic_recovery_rho << ','
+        << r.elastic_recovery_H << ',' << r.residual_radial_pressure << ','
+        << r.ejection_pressure << ',' << r.residual << ',' << r.iterations
+        << ',' << r.cg_iterations << ',' << r.cutbacks << ',' << r.wall_seconds
+        << '\n';
     out.precision(old);
   }
 } // namespace compax::dem

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "dem/die/die_analysis.h"
+#include "dem/solver/consolidation.h"
 #include "dem/solver/load_stepper.h"
 
 #include <iosfwd>
@@ -29,55 +30,68 @@ namespace compax::dem
     int max_ejection_steps = 40;
     /// Whether to eject after each unloading branch.
     bool eject = true;
+    /// Consolidate the loose deposit up to jamming before the static load
+    /// steps (see Consolidation): the punch advances while the bed relaxes
+    /// at fixed internal variables until the relaxed bed carries
+    /// consolidation.jamming_pressure. Compaction targets and unloading
+    /// points below the density so reached are skipped (no rows: the bed
+    /// carries no force there).
+    bool                 consolidate = true;
+    ConsolidationOptions consolidation;
+    /// Also write a progress line per unloading and ejection step.
+    bool verbose = false;
   };
 
   /// One row of die.csv: the state after a converged load step.
   struct DieRecord
   {
     std::string stage; // compaction, unloading, ejection
-    int         branch = 0;
-    int         step   = 0;
-    double      punch_gap          = 0.0;
-    double      relative_density   = 0.0;
-    double      rho_max_in_die     = 0.0;
-    double      rho_min_in_die     = 0.0;
-    double      rho_tablet         = 0.0;
-    double      upper_punch_force  = 0.0;
-    double      lower_punch_force  = 0.0;
-    double      die_wall_force     = 0.0;
-    double      upper_punch_pressure = 0.0;
-    double      lower_punch_pressure = 0.0;
-    double      die_wall_pressure    = 0.0;
-    double      coordination_number  = 0.0;
-    double      bonding_surface      = 0.0;
-    std::size_t bonds                = 0;
-    std::size_t bonds_formed         = 0;
-    std::size_t bonds_broken         = 0;
-    double      elastic_recovery_rho = 0.0;
-    double      elastic_recovery_H   = 0.0;
+    int         branch                   = 0;
+    int         step                     = 0;
+    double      punch_gap                = 0.0;
+    double      relative_density         = 0.0;
+    double      rho_max_in_die           = 0.0;
+    double      rho_min_in_die           = 0.0;
+    double      rho_tablet               = 0.0;
+    double      upper_punch_force        = 0.0;
+    double      lower_punch_force        = 0.0;
+    double      die_wall_force           = 0.0;
+    double      upper_punch_pressure     = 0.0;
+    double      lower_punch_pressure     = 0.0;
+    double      die_wall_pressure        = 0.0;
+    double      coordination_number      = 0.0;
+    double      bonding_surface          = 0.0;
+    std::size_t bonds                    = 0;
+    std::size_t bonds_formed             = 0;
+    std::size_t bonds_broken             = 0;
+    double      elastic_recovery_rho     = 0.0;
+    double      elastic_recovery_H       = 0.0;
     double      residual_radial_pressure = 0.0;
     double      ejection_pressure        = 0.0;
     double      residual                 = 0.0;
-    int         iterations               = 0;
-    int         cg_iterations            = 0;
-    int         cutbacks                 = 0;
-    double      wall_seconds             = 0.0;
+    /// Mean |P| over the loaded contacts [N] (the residual's scale; not
+    /// written to die.csv).
+    double mean_contact_force = 0.0;
+    int    iterations         = 0;
+    int    cg_iterations      = 0;
+    int    cutbacks           = 0;
+    double wall_seconds       = 0.0;
   };
 
   /// The outcome of one unloading branch (and its ejection).
   struct BranchSummary
   {
-    int              branch = 0;
-    double           rho_max_in_die = 0.0, rho_min_in_die = 0.0, rho_tablet = 0.0;
-    double           max_punch_pressure       = 0.0;
-    double           elastic_recovery_rho     = 0.0;
-    double           elastic_recovery_H       = 0.0;
-    double           residual_radial_pressure = 0.0;
-    double           ejection_pressure        = 0.0;
-    double           bonding_surface_compacted = 0.0;
-    double           bonding_surface_unloaded  = 0.0;
-    double           bonding_surface_ejected   = 0.0;
-    double           coordination_compacted    = 0.0;
+    int    branch         = 0;
+    double rho_max_in_die = 0.0, rho_min_in_die = 0.0, rho_tablet = 0.0;
+    double max_punch_pressure        = 0.0;
+    double elastic_recovery_rho      = 0.0;
+    double elastic_recovery_H        = 0.0;
+    double residual_radial_pressure  = 0.0;
+    double ejection_pressure         = 0.0;
+    double bonding_surface_compacted = 0.0;
+    double bonding_surface_unloaded  = 0.0;
+    double bonding_surface_ejected   = 0.0;
+    double coordination_compacted    = 0.0;
     TabletElasticity tablet;
   };
 
@@ -102,9 +116,44 @@ namespace compax::dem
     void
     set_output(std::ostream *csv, std::ostream *progress);
 
-    /// Runs the whole protocol; throws if a load step cannot converge.
+    /**
+     * Runs the whole protocol. If a load step cannot converge after all
+     * cut-backs, it throws std::runtime_error; failed(), failure() and
+     * last_converged() then describe where it stopped, and records()
+     * holds every converged row up to there.
+     */
     void
     run();
+
+    /// Whether run() stopped at a load step that did not converge.
+    bool
+    failed() const
+    {
+      return !failure_message.empty();
+    }
+
+    /// What failed (empty if nothing did).
+    const std::string &
+    failure() const
+    {
+      return failure_message;
+    }
+
+    /// The state of the last emitted row (compaction path, unloading or
+    /// ejection branch): the state to write after a failure.
+    const Bed &
+    last_converged() const
+    {
+      return last_good;
+    }
+
+    /// In-die relative density at which consolidation found the bed jammed
+    /// (0 without consolidation) [-].
+    double
+    jamming_density() const
+    {
+      return rho_jammed;
+    }
 
     const std::vector<DieRecord> &
     records() const
@@ -133,7 +182,12 @@ namespace compax::dem
 
     /// Totals for performance reports.
     double assembly_seconds = 0.0, linear_seconds = 0.0;
-    long   assemblies = 0, newton_iterations = 0, cg_iterations = 0;
+    double fire_seconds = 0.0;
+    long   assemblies = 0, newton_iterations = 0, cg_iterations = 0,
+         fire_iterations = 0;
+    /// Consolidation: wall time and relaxation iterations.
+    double consolidation_seconds    = 0.0;
+    long   consolidation_iterations = 0;
 
   private:
     void
@@ -143,7 +197,10 @@ namespace compax::dem
     unloading_branch(int branch);
 
     void
-    eject(Bed &bed, int branch, BranchSummary &summary);
+    consolidate();
+
+    void
+    eject(Bed &bed, int branch, BranchSummary &summary, double envelope);
 
     DieRecord
     record(const Bed            &bed,
@@ -153,10 +210,10 @@ namespace compax::dem
            const LoadStepResult &r);
 
     void
-    emit(const DieRecord &r);
+    emit(const DieRecord &r, const Bed &state);
 
     void
-    check(const LoadStepResult &r, const std::string &what) const;
+    check(const LoadStepResult &r, const std::string &what);
 
     Bed                        path;
     const ContactModel        &model;
@@ -164,8 +221,11 @@ namespace compax::dem
     LoadStepper                stepper;
     std::vector<DieRecord>     rows;
     std::vector<BranchSummary> summaries;
-    std::ostream              *csv      = nullptr;
-    std::ostream              *progress = nullptr;
+    std::ostream              *csv        = nullptr;
+    std::ostream              *progress   = nullptr;
     double                     start_time = 0.0;
+    Bed                        last_good;
+    std::string                failure_message;
+    double                     rho_jammed = 0.0;
   };
 } // namespace compax::dem

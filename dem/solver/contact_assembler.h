@@ -10,6 +10,19 @@
 
 namespace compax::dem
 {
+  /**
+   * The law's response(gamma, a_p, a_B) evaluated inline: the plastic
+   * branch for any m, the elastic branch and the bridge for m = 2 with
+   * a^{1/2} and a_p^{1/2} by sqrt instead of pow (libm's pow dominated the
+   * profile of the residual); otherwise delegated to the law. The same
+   * formulas, equal to round-off (tests/unit/dem/test_solver_consolidation
+   * compares both on every branch).
+   */
+  ContactResponse
+  contact_response(const BondedElastoplasticLaw &law,
+                   double                        gamma,
+                   const ContactHistory         &history);
+
   /// Force sums gathered while assembling.
   struct ContactSums
   {

@@ -1,6 +1,7 @@
 #include "dem/solver/load_stepper.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace compax::dem
@@ -41,7 +42,7 @@ namespace compax::dem
 
     /// Affine map of the heights between the punches of `from` onto `to`.
     void
-    predict(ParticleSystem &p, const DieWalls &from, const DieWalls &to)
+    map_heights(ParticleSystem &p, const DieWalls &from, const DieWalls &to)
     {
       const double h0 = from.height(), h1 = to.height();
       if (h0 <= 0.0 || h1 == h0)
@@ -54,6 +55,32 @@ namespace compax::dem
         }
     }
   } // namespace
+
+  void
+  LoadStepper::predict(Bed &bed, const DieWalls &next)
+  {
+    const DieWalls &w        = bed.walls;
+    const double    delta[3] = {next.lower_punch - w.lower_punch,
+                                next.upper_punch - w.upper_punch,
+                                next.diameter - w.diameter};
+    double          dot = 0.0, nn = 0.0, oo = 0.0;
+    for (int k = 0; k < 3; ++k)
+      {
+        dot += delta[k] * last_delta[k];
+        nn += delta[k] * delta[k];
+        oo += last_delta[k] * last_delta[k];
+      }
+    const bool parallel
+      = stepping.secant_predictor && have_increment && nn > 0.0 && oo > 0.0
+        && dot > 0.999 * std::sqrt(nn * oo) && next.die_present == w.die_present
+        && last_die_present == w.die_present
+        && last_increment.size()
+             == static_cast<Eigen::Index>(3 * bed.particles.size());
+    if (parallel)
+      bed.particles.coordinates() += (dot / oo) * last_increment;
+    else
+      map_heights(bed.particles, w, next);
+  }
 
   LoadStepResult
   LoadStepper::equilibrate(Bed &bed)
@@ -80,12 +107,19 @@ namespace compax::dem
         const double t      = std::min(1.0, done + fraction);
         saved               = bed;
         const DieWalls next = t >= 1.0 ? target : interpolate(start, target, t);
-        predict(bed.particles, bed.walls, next);
+        predict(bed, next);
         bed.walls                 = next;
         const EquilibriumResult r = newton.solve(bed, model);
         accumulate(total, r);
         if (r.converged)
           {
+            last_increment
+              = bed.particles.coordinates() - saved.particles.coordinates();
+            last_delta[0]    = next.lower_punch - saved.walls.lower_punch;
+            last_delta[1]    = next.upper_punch - saved.walls.upper_punch;
+            last_delta[2]    = next.diameter - saved.walls.diameter;
+            last_die_present = next.die_present;
+            have_increment   = true;
             const BondChanges b
               = bed.contacts.update_histories(bed.particles, bed.walls);
             total.bonds.formed += b.formed;

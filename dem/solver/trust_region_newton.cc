@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
+#include <ostream>
 
 namespace compax::dem
 {
@@ -34,16 +33,93 @@ namespace compax::dem
   {
   }
 
+  bool
+  TrustRegionNewton::limit_to_gaps(const Bed &bed)
+  {
+    const ParticleSystem &p = bed.particles;
+    const std::size_t     n = p.size();
+    factor.setOnes(n);
+    // Overlap a closing contact may reach within one step: the mean overlap
+    // of the loaded contacts (the force scale the model already knows).
+    double      sum_overlap = 0.0;
+    std::size_t loaded      = 0;
+    for (const PairContact &c : bed.contacts.pairs)
+      {
+        const double gamma = pair_overlap(p, c);
+        if (gamma > 0.0)
+          {
+            sum_overlap += gamma;
+            ++loaded;
+          }
+      }
+    const double allowance
+      = loaded > 0 ? sum_overlap / loaded : 1e-3 * p.mean_radius();
+    bool clipped = false;
+    auto limit   = [&](std::uint32_t i, double gap, double closing) {
+      if (closing > gap + allowance)
+        {
+          factor[i] = std::min(factor[i], (gap + allowance) / closing);
+          clipped   = true;
+        }
+    };
+    for (const PairContact &c : bed.contacts.pairs)
+      {
+        // Only contacts the quadratic model does not see: virgin and apart.
+        if (c.history.a_p > 0.0)
+          continue;
+        const Eigen::Vector3d d     = p.positions[c.i] - p.positions[c.j];
+        const double          dist  = d.norm();
+        const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
+        if (gamma > 0.0)
+          continue;
+        const double closing
+          = -(s.segment<3>(3 * c.i) - s.segment<3>(3 * c.j)).dot(d) / dist;
+        // Both particles share the closing distance.
+        limit(c.i, -gamma, closing);
+        limit(c.j, -gamma, closing);
+      }
+    for (const WallContact &c : bed.contacts.walls)
+      {
+        if (c.history.a_p > 0.0)
+          continue;
+        const WallGap g = bed.walls.gap(c.wall, p.positions[c.i], p.radii[c.i]);
+        if (g.overlap > 0.0)
+          continue;
+        limit(c.i, -g.overlap, -s.segment<3>(3 * c.i).dot(g.normal));
+      }
+    // No particle moves farther than a quarter of the Verlet skin (the
+    // contact list stays valid); capping the few that would, instead of
+    // shrinking the trust region of the whole bed, keeps the others' steps.
+    const double cap = 0.25 * bed.contacts.skin();
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        const double len = s.segment<3>(3 * i).norm();
+        if (len * factor[i] > cap)
+          {
+            factor[i] = cap / len;
+            clipped   = true;
+          }
+      }
+    if (clipped)
+      for (std::size_t i = 0; i < n; ++i)
+        s.segment<3>(3 * i) *= factor[i];
+    return clipped;
+  }
+
   EquilibriumResult
   TrustRegionNewton::solve(Bed &bed, const ContactModel &model)
   {
     EquilibriumResult result;
-    const double      R_mean     = bed.particles.mean_radius();
-    const double      max_radius = opts.max_radius * R_mean;
+    const double      R_mean = bed.particles.mean_radius();
+    // The trust region bounds the M-norm of the whole step, so that a
+    // radius of r R sqrt(N) lets every particle move by about r R.
+    const double length
+      = R_mean * std::sqrt(static_cast<double>(bed.particles.size()));
+    const double max_radius = opts.max_radius * length;
     if (radius <= 0.0)
-      radius = opts.initial_radius * R_mean;
+      radius = opts.initial_radius * length;
     radius
-      = std::clamp(radius, 1e-3 * opts.initial_radius * R_mean, max_radius);
+      = std::clamp(radius, 1e-3 * opts.initial_radius * length, max_radius);
 
     auto assemble = [&]() {
       const auto t0 = clock_type::now();
@@ -76,15 +152,17 @@ namespace compax::dem
           {
             // Newton crawls: the bed is rearranging. Relax with FIRE.
             const auto       tf = clock_type::now();
-            const FireResult fr
-              = fire.relax(bed, model, 1e-2, opts.fire_iterations);
+            const FireResult fr = fire.relax(bed,
+                                             model,
+                                             opts.fire_tolerance,
+                                             opts.fire_iterations);
             result.fire_seconds += seconds_since(tf);
             result.fire_iterations += fr.iterations;
             assemble();
             result.relative_residual = relative(F, result.sums);
             best                     = result.relative_residual;
             best_at                  = it;
-            radius                   = opts.initial_radius * R_mean;
+            radius                   = opts.initial_radius * length;
             stepped                  = false;
           }
         const bool force_ok = result.relative_residual <= opts.force_tolerance;
@@ -101,23 +179,43 @@ namespace compax::dem
 
         // Trust-region subproblem.
         const auto t0 = clock_type::now();
-        M.compute(K);
-        const double eta
-          = std::min(0.5, std::sqrt(F.norm() / F0)) * (force_ok ? 0.1 : 1.0);
+        M.compute(K, opts.preconditioner_floor);
+        const double eta = std::min(opts.max_forcing, std::sqrt(F.norm() / F0))
+                           * (force_ok ? 0.1 : 1.0);
         const SteihaugResult sub
           = cg.solve(K, M, F, radius, eta, opts.max_cg_iterations, s);
         result.linear_seconds += seconds_since(t0);
         result.cg_iterations += sub.iterations;
         ++result.iterations;
+        double pred = sub.predicted_decrease, step_norm = sub.step_norm;
+        s_full = s;
+        if (opts.limit_to_gaps && limit_to_gaps(bed))
+          {
+            // The clipped step's own model decrease and length; if clipping
+            // single particles lost the model decrease, shorten the whole
+            // step uniformly instead (a Steihaug step is a descent
+            // direction, g.s < 0).
+            Ks.resize(s.size());
+            K.vmult(Ks, s);
+            pred = -(F.dot(s) + 0.5 * s.dot(Ks));
+            if (!(pred > 0.0))
+              {
+                s = factor.minCoeff() * s_full;
+                K.vmult(Ks, s);
+                pred = -(F.dot(s) + 0.5 * s.dot(Ks));
+              }
+            M.multiply(Ks, s);
+            step_norm = std::sqrt(std::max(s.dot(Ks), 0.0));
+          }
         // No particle may move more than half the Verlet skin in one step
         // (it could pass through a wall or a neighbour): shrink and retry.
         const double longest = max_particle_norm(s);
         if (longest > 0.5 * bed.contacts.skin())
           {
-            radius = sub.step_norm * 0.25 * bed.contacts.skin() / longest;
+            radius = step_norm * 0.25 * bed.contacts.skin() / longest;
             continue;
           }
-        if (!(sub.predicted_decrease > 0.0))
+        if (!(pred > 0.0))
           {
             // No decrease predicted: the residual is numerically zero in
             // every loaded direction.
@@ -133,24 +231,18 @@ namespace compax::dem
         const ContactSums old_sums = result.sums;
         assemble();
         const double actual = -0.5 * (F_old + F).dot(s);
-        const double rho    = actual / sub.predicted_decrease;
-        if (std::getenv("COMPAX_TR_DEBUG"))
-          std::fprintf(stderr,
-                       "  it %d res %.3e mean %.3e radius %.3e cg %d bnd %d "
-                       "neg %d pred %.3e rho %.3f step %.3e\n",
-                       it,
-                       result.relative_residual,
-                       old_sums.mean_force,
-                       radius,
-                       sub.iterations,
-                       sub.on_boundary,
-                       sub.negative_curvature,
-                       sub.predicted_decrease,
-                       rho,
-                       max_particle_norm(s));
+        const double rho    = actual / pred;
+        if (opts.trace)
+          *opts.trace << "  newton it " << it << " residual "
+                      << result.relative_residual << " mean force "
+                      << old_sums.mean_force << " radius " << radius << " cg "
+                      << sub.iterations << " boundary " << sub.on_boundary
+                      << " negative curvature " << sub.negative_curvature
+                      << " predicted " << pred << " rho " << rho << " step "
+                      << max_particle_norm(s) << '\n';
 
         if (rho < 0.25)
-          radius = 0.25 * sub.step_norm;
+          radius = 0.25 * step_norm;
         else if (rho > 0.75 && sub.on_boundary)
           radius = std::min(2.0 * radius, max_radius);
 

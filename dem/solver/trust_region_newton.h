@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include <iosfwd>
+
 namespace compax::dem
 {
   /// Tolerances and limits of the equilibrium solver.
@@ -21,10 +23,31 @@ namespace compax::dem
     double step_tolerance = 1e-4;
     /// Newton iterations before the solve is declared failed.
     int max_iterations = 200;
+    /// Largest relative tolerance (forcing term) of the inexact linear
+    /// solves; the forcing term is min(max_forcing, sqrt(|F| / |F_0|)) [-].
+    /// A loose first solve after a load increment (0.5) gives poor steps
+    /// that drive the iterate into indefinite regions.
+    double max_forcing = 0.1;
+    /// Floor of the eigenvalues of the block-Jacobi preconditioner, which
+    /// is also the trust-region norm, relative to the mean diagonal
+    /// stiffness [-]. Particles with few contacts (near rattlers) are soft
+    /// in some directions; the floor keeps their weight in the norm, so that
+    /// a step along their negative curvature stays as short as the others.
+    double preconditioner_floor = 1e-3;
+    /// Shorten the step of every particle that would close a gap to a
+    /// contact the quadratic model does not see (virgin, apart) by more
+    /// than that gap plus the mean overlap of the loaded contacts: the
+    /// model has no stiffness there, and such steps (floppy particles
+    /// running into neighbours) are otherwise rejected over and over. Also
+    /// caps every particle's step at a quarter of the Verlet skin, particle
+    /// by particle, instead of shrinking the trust region of the whole bed
+    /// for the sake of one particle.
+    bool limit_to_gaps = true;
     /// Conjugate-gradient iterations per Newton iteration.
     int max_cg_iterations = 2000;
-    /// Initial and largest trust-region radius as fractions of the mean
-    /// radius [-].
+    /// Initial and largest trust-region radius as fractions of
+    /// R_mean sqrt(N), i.e. of a step that moves every particle by about
+    /// the mean radius [-].
     double initial_radius = 0.05;
     double max_radius     = 0.5;
     /// Newton iterations without a tenfold drop of the residual after which
@@ -32,6 +55,13 @@ namespace compax::dem
     int stall_iterations = 8;
     /// FIRE iterations per fallback.
     int fire_iterations = 5000;
+    /// Relative residual (max_i |F_i| / mean contact force) at which a FIRE
+    /// fallback hands back to Newton [-].
+    double fire_tolerance = 1e-3;
+    /// Where to write one line per Newton iteration (residual, trust
+    /// radius, CG iterations, ratio of actual to predicted decrease), for
+    /// diagnosing convergence; null for none.
+    std::ostream *trace = nullptr;
   };
 
   /// Outcome of one equilibrium solve.
@@ -58,7 +88,8 @@ namespace compax::dem
    * Newton method on the bed's stored energy, whose gradient is the
    * residual F and whose Hessian is K. Each step solves the trust-region
    * subproblem with Steihaug-Toint conjugate gradients (block-Jacobi
-   * preconditioned, inexact with forcing term min(0.5, sqrt(|F|/|F_0|))),
+   * preconditioned, inexact with forcing term min(max_forcing,
+   * sqrt(|F|/|F_0|))),
    * which handles indefinite K (geometric and softening terms) and the
    * singular directions of rattlers. The energy change of a step is
    * measured by the trapezoidal rule -(F(x) + F(x+s)).s/2, exact for a
@@ -87,13 +118,18 @@ namespace compax::dem
     }
 
   private:
+    /// Applies EquilibriumOptions::limit_to_gaps to the step s; returns
+    /// whether it changed it.
+    bool
+    limit_to_gaps(const Bed &bed);
+
     EquilibriumOptions        opts;
     ContactAssembler          assembler;
     BlockSparseMatrix         K;
     BlockJacobiPreconditioner M;
     SteihaugCG                cg;
     FireRelaxation            fire;
-    Eigen::VectorXd           F, F_old, x_old, s;
+    Eigen::VectorXd           F, F_old, x_old, s, s_full, Ks, factor;
     double                    radius = -1.0;
   };
 

@@ -1,0 +1,79 @@
+#include "dem/die/die_compaction.h"
+#include "dem/die/die_setup.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+using namespace compax::dem;
+
+/// A small deposited bed of Material 1 compacted, unloaded and ejected.
+/// Checks conservation laws at every converged state: with a frictionless
+/// die wall (radial forces only) the punch forces balance, |F_u - F_l|
+/// bounded by the sum of the particles' residual forces (N max_i |F_i|); every
+/// particle's net force is within the solver tolerance (recomputed
+/// independently); unloading ends with a free upper punch and a lower density.
+TEST(DieProtocol, PunchForcesBalanceAndBranchesAreConsistent)
+{
+  DepositionParameters dp;
+  dp.n_particles         = 150;
+  dp.die_diameter        = 3e-3;
+  dp.seed                = 3;
+  Bed                bed = fill_die(dp);
+  const ContactModel model(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
+                           1.26e6);
+  DieProtocol        protocol;
+  protocol.compaction_targets
+    = density_targets(bed.relative_density(), 0.8, 20);
+  protocol.unloading_points = {0.8};
+  DieCompaction      die(bed, model, protocol);
+  std::ostringstream csv;
+  die.set_output(&csv, nullptr);
+  ASSERT_NO_THROW(die.run());
+
+  const double tol    = EquilibriumOptions{}.force_tolerance;
+  bool         saw[3] = {false, false, false};
+  for (const DieRecord &r : die.records())
+    {
+      saw[0] |= r.stage == "compaction";
+      saw[1] |= r.stage == "unloading";
+      saw[2] |= r.stage == "ejection";
+      EXPECT_LE(r.residual, tol);
+      // Pair forces cancel in the sum of the particles' out-of-balance
+      // forces, which leaves F_u - F_l (die wall radial): bounded by N
+      // times the largest particle residual.
+      if (!(r.stage == "compaction" && r.step == 0)) // the deposit
+        {
+          EXPECT_LE(std::abs(r.upper_punch_force - r.lower_punch_force),
+                    static_cast<double>(dp.n_particles) * r.residual
+                        * r.mean_contact_force
+                      + 1e-12 * std::abs(r.upper_punch_force))
+            << r.stage << " step " << r.step;
+        }
+    }
+  EXPECT_TRUE(saw[0] && saw[1] && saw[2]);
+
+  // Independent residual of the final compaction state.
+  Bed               final_bed = die.bed();
+  ContactAssembler  a;
+  Eigen::VectorXd   F;
+  const ContactSums s = a.residual(final_bed, model, F);
+  EXPECT_LE(max_particle_norm(F), tol * s.mean_force);
+  EXPECT_GT(s.wall_force[int(Wall::upper_punch)], 0.0);
+
+  ASSERT_EQ(die.branches().size(), 1u);
+  const BranchSummary &b = die.branches()[0];
+  EXPECT_NEAR(b.rho_max_in_die, 0.8, 1e-9);
+  EXPECT_LT(b.rho_min_in_die, b.rho_max_in_die);
+  EXPECT_GT(b.elastic_recovery_rho, 0.0);
+  // Eq. (16): both recoveries agree to first order, eps_H = eps_rho /
+  // (1 - eps_rho) exactly since rho H is constant.
+  EXPECT_NEAR(b.elastic_recovery_H,
+              b.elastic_recovery_rho / (1 - b.elastic_recovery_rho),
+              1e-9);
+  EXPECT_GE(b.residual_radial_pressure, 0.0);
+  // Gonzalez 2018 Sec. 5: the tablet out of the die has about the density
+  // at the end of unloading, rho_tablet ~ rho_min^in-die.
+  EXPECT_NEAR(b.rho_tablet, b.rho_min_in_die, 0.03);
+  EXPECT_NE(csv.str().find("stage,branch,step"), std::string::npos);
+}

@@ -1,0 +1,146 @@
+#include "dem/die/die_compaction.h"
+#include "dem/die/die_setup.h"
+#include "dem/solver/consolidation.h"
+#include "dem/solver/contact_assembler.h"
+#include "dem/solver/trust_region_newton.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+using namespace compax::dem;
+
+namespace
+{
+  ContactModel
+  material1()
+  {
+    return ContactModel(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0}, 1.26e6);
+  }
+} // namespace
+
+/// The inline plastic branch of the assembler reproduces the law's own
+/// response on every branch: virgin, plastic reloading, elastic unloading
+/// with and without a bridge, separated; for m = 2 (sqrt path) and m = 3.
+TEST(SolverConsolidation, InlineResponseEqualsLaw)
+{
+  for (const double m : {2.0, 3.0})
+    {
+      const ElastoplasticMaterial mat{5e9, 0.25, 150e6, m};
+      const auto                  law = BondedElastoplasticLaw::for_pair(
+        mat, 220e-6, mat, 220e-6, 1.26e6, 0.01, true);
+      const double a_p = law.plastic_radius(2e-6);
+      for (const ContactHistory h : {ContactHistory{0.0, 0.0},
+                                     ContactHistory{a_p, 0.0},
+                                     ContactHistory{a_p, a_p}})
+        for (double gamma = -1e-6; gamma <= 4e-6; gamma += 1.7e-8)
+          {
+            const ContactResponse ref = law.response(gamma, h.a_p, h.a_B);
+            const ContactResponse r   = contact_response(law, gamma, h);
+            EXPECT_NEAR(r.force,
+                        ref.force,
+                        1e-13 * std::abs(ref.force) + 1e-300);
+            EXPECT_NEAR(r.stiffness,
+                        ref.stiffness,
+                        1e-13 * std::abs(ref.stiffness) + 1e-300);
+          }
+    }
+}
+
+/// A loose deposit consolidated to jamming: the relaxed bed is in
+/// equilibrium to the relaxation tolerance (recomputed independently of
+/// the relaxation), the punches carry equal and opposite forces (no
+/// friction, no gravity: the die wall acts radially only), the upper punch
+/// carries at least the jamming pressure, the jamming density lies below
+/// random close packing of frictionless spheres (~0.64), and no internal
+/// variable changed (consolidation never updates histories).
+TEST(SolverConsolidation, LooseDepositJamsWithBalancedPunches)
+{
+  DepositionParameters dp;
+  dp.n_particles           = 300;
+  dp.die_diameter          = 3.5e-3;
+  dp.seed                  = 5;
+  Bed                bed   = fill_die(dp);
+  const ContactModel model = material1();
+  const double       rho0  = bed.relative_density();
+  EXPECT_LT(rho0, 0.55);
+
+  ConsolidationOptions      opts;
+  Consolidation             c(opts);
+  const ConsolidationResult r = c.run(bed, model, 0.8);
+  ASSERT_TRUE(r.jammed);
+  EXPECT_FALSE(r.failed);
+  EXPECT_GT(bed.relative_density(), rho0);
+  EXPECT_LT(bed.relative_density(), 0.66);
+
+  ContactAssembler  a;
+  Eigen::VectorXd   F;
+  const ContactSums s    = a.residual(bed, model, F);
+  const double      area = bed.walls.punch_area();
+  EXPECT_GE(s.wall_force[int(Wall::upper_punch)], opts.jamming_pressure * area);
+  EXPECT_LE(max_particle_norm(F), opts.relative_tolerance * s.mean_force);
+  // Newton's third law over the whole bed: the axial forces on the
+  // particles sum to the punch forces' difference.
+  double fz = 0.0;
+  for (Eigen::Index i = 2; i < F.size(); i += 3)
+    fz += F[i];
+  EXPECT_NEAR(s.wall_force[int(Wall::upper_punch)]
+                - s.wall_force[int(Wall::lower_punch)],
+              fz,
+              1e-9 * s.wall_force[int(Wall::upper_punch)]);
+  // ... hence bounded by N times the largest out-of-balance force.
+  EXPECT_LE(std::abs(fz),
+            static_cast<double>(bed.particles.size()) * opts.relative_tolerance
+              * s.mean_force);
+  for (const PairContact &p : bed.contacts.pairs)
+    {
+      EXPECT_EQ(p.history.a_p, 0.0);
+      EXPECT_EQ(p.history.a_B, 0.0);
+    }
+}
+
+/// Regression of the whole path on ~1000 particles of Material 1: the
+/// ballistic deposit consolidates to jamming, then static load steps reach
+/// in-die relative density 0.85. At every converged state every particle's
+/// net force is within the solver tolerance and the punch forces balance.
+TEST(SolverConsolidation, ThousandParticlesReach085)
+{
+  DepositionParameters dp;
+  dp.n_particles           = 1000;
+  dp.die_diameter          = 10e-3 * std::cbrt(1000.0 / 6512.0);
+  dp.seed                  = 1;
+  Bed                bed   = fill_die(dp);
+  const ContactModel model = material1();
+  DieProtocol        protocol;
+  protocol.compaction_targets
+    = density_targets(bed.relative_density(), 0.85, 21);
+  DieCompaction      die(bed, model, protocol);
+  std::ostringstream csv;
+  die.set_output(&csv, nullptr);
+  ASSERT_NO_THROW(die.run());
+  EXPECT_FALSE(die.failed());
+  EXPECT_GT(die.jamming_density(), 0.5);
+  EXPECT_LT(die.jamming_density(), 0.66);
+  EXPECT_NEAR(die.bed().relative_density(), 0.85, 1e-9);
+
+  const double tol = EquilibriumOptions{}.force_tolerance;
+  for (const DieRecord &r : die.records())
+    {
+      if (r.step == 0)
+        continue; // the deposit as filled
+      EXPECT_LE(r.residual, tol) << r.step;
+      EXPECT_GT(r.upper_punch_force, 0.0) << r.step;
+      // Pair forces cancel in the sum of the out-of-balance forces, which
+      // leaves F_u - F_l: bounded by N times the largest residual.
+      EXPECT_LE(std::abs(r.upper_punch_force - r.lower_punch_force),
+                1000.0 * r.residual * r.mean_contact_force
+                  + 1e-12 * r.upper_punch_force)
+        << r.step;
+    }
+  Bed               final_bed = die.bed();
+  ContactAssembler  a;
+  Eigen::VectorXd   F;
+  const ContactSums s = a.residual(final_bed, model, F);
+  EXPECT_LE(max_particle_norm(F), tol * s.mean_force);
+}
