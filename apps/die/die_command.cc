@@ -4,6 +4,8 @@
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
+#include "apps/die/bed_checkpoint.h"
+#include "apps/die/branch_states.h"
 #include "apps/die/die_parameters.h"
 #include "apps/die/die_study_fits.h"
 #include "dem/die/die_setup.h"
@@ -156,6 +158,12 @@ namespace compax::cli
                                study.protocol,
                                study.equilibrium);
         die.set_output(&csv, &std::cout);
+        BranchStateWriter branch_states(folder);
+        die.on_branch_state = [&branch_states](const dem::Bed    &state,
+                                               const std::string &stage,
+                                               int                branch) {
+          branch_states(state, stage, branch);
+        };
         int code = success;
         try
           {
@@ -164,7 +172,14 @@ namespace compax::cli
         catch (const std::runtime_error &e)
           {
             std::cerr << "compax die: " << e.what()
-                      << "; the converged steps are kept in die.csv\n";
+                      << "; the converged steps are kept in die.csv and the "
+                         "last converged state in last_converged.h5\n";
+            coupling::Hdf5ArchiveWriter archive(
+              (folder / "last_converged.h5").string());
+            archive.write_attribute("format", "compax die bed state 1");
+            archive.write_attribute("failure", die.failure());
+            save_bed(archive, "bed", die.last_converged());
+            archive.commit();
             code = not_converged;
           }
         csv.close();

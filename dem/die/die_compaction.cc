@@ -285,7 +285,9 @@ namespace compax::dem
   void
   DieCompaction::unloading_branch(const int branch)
   {
-    Bed           bed = path; // the saved state of the compaction path
+    Bed bed = path; // the saved state of the compaction path
+    if (on_branch_state)
+      on_branch_state(bed, "compaction", branch);
     BranchSummary s;
     s.branch                    = branch;
     s.rho_max_in_die            = bed.relative_density();
@@ -353,8 +355,14 @@ namespace compax::dem
                 << s.rho_min_in_die << "  recovery "
                 << 100 * s.elastic_recovery_rho << " %  residual radial "
                 << s.residual_radial_pressure / 1e6 << " MPa" << std::endl;
+    if (on_branch_state)
+      on_branch_state(bed, "unloading", branch);
     if (protocol.eject)
-      eject(bed, branch, s, envelope);
+      {
+        eject(bed, branch, s, envelope);
+        if (on_branch_state)
+          on_branch_state(bed, "ejection", branch);
+      }
     summaries.push_back(s);
   }
 

@@ -4,6 +4,7 @@
 #include "dem/solver/consolidation.h"
 #include "dem/solver/load_stepper.h"
 
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -115,6 +116,16 @@ namespace compax::dem
     /// lines go to `progress` (may be null).
     void
     set_output(std::ostream *csv, std::ostream *progress);
+
+    /**
+     * Called with the three states of each branch that Gonzalez 2018 Sec.
+     * 5.5 analyses (stage "compaction": the compaction path at the
+     * unloading point; "unloading": the compact at C, the punch just free;
+     * "ejection": the ejected tablet), for snapshots, fabric and force
+     * histograms, and checkpoints. The bed must not be kept by reference.
+     */
+    std::function<void(const Bed &bed, const std::string &stage, int branch)>
+      on_branch_state;
 
     /**
      * Runs the whole protocol. If a load step cannot converge after all
