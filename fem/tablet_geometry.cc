@@ -76,7 +76,8 @@ namespace compax::fem
     template <int dim>
     void
     colour_boundaries(dealii::Triangulation<dim> &tria,
-                      const TabletGeometry       &geometry)
+                      const TabletGeometry       &geometry,
+                      const bool                  quarter = false)
     {
       const double tol
         = 1e-10 * std::max(geometry.radius(), geometry.fill_height);
@@ -93,6 +94,10 @@ namespace compax::fem
               face->set_boundary_id(upper_punch);
             else if (dim == 2 && std::abs(c[0]) < tol)
               face->set_boundary_id(axis);
+            else if (dim == 3 && quarter && std::abs(c[0]) < tol)
+              face->set_boundary_id(symmetry_x);
+            else if (dim == 3 && quarter && std::abs(c[1]) < tol)
+              face->set_boundary_id(symmetry_y);
             else
               face->set_boundary_id(die_wall);
           }
@@ -141,6 +146,39 @@ namespace compax::fem
     tria.reset_all_manifolds();
     tria.set_all_manifold_ids(dealii::numbers::flat_manifold_id);
     colour_boundaries(tria, geometry);
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == die_wall)
+          face->set_all_manifold_ids(die_wall_manifold);
+    tria.set_manifold(
+      die_wall_manifold,
+      dealii::CylindricalManifold<3>(dealii::Tensor<1, 3>({0.0, 0.0, 1.0}),
+                                     dealii::Point<3>(0.0, 0.0, 0.0)));
+    tria.refine_global(n_global_refinements);
+  }
+
+  void
+  make_quarter_cylindrical_compact(dealii::Triangulation<3> &tria,
+                                   const TabletGeometry     &geometry,
+                                   const unsigned int n_global_refinements)
+  {
+    geometry.validate();
+    dealii::Triangulation<2> disk;
+    dealii::GridGenerator::quarter_hyper_ball(disk,
+                                              dealii::Point<2>(0.0, 0.0),
+                                              geometry.radius());
+    // The quarter disk's cells are about R/2 wide; match that along z.
+    const unsigned int n_slices
+      = std::max(1u,
+                 static_cast<unsigned int>(std::lround(
+                   2.0 * geometry.fill_height / geometry.radius())));
+    dealii::GridGenerator::extrude_triangulation(disk,
+                                                 n_slices + 1,
+                                                 geometry.fill_height,
+                                                 tria);
+    tria.reset_all_manifolds();
+    tria.set_all_manifold_ids(dealii::numbers::flat_manifold_id);
+    colour_boundaries(tria, geometry, /*quarter=*/true);
     for (const auto &cell : tria.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary() && face->boundary_id() == die_wall)

@@ -17,7 +17,10 @@ namespace compax::fem
     axis        = 0,
     die_wall    = 1,
     lower_punch = 2,
-    upper_punch = 3
+    upper_punch = 3,
+    /// Symmetry planes x = 0 and y = 0 of the 3-D quarter model.
+    symmetry_x = 4,
+    symmetry_y = 5
   };
 
   /// Manifold id of the curved die wall of the 3-D cylinder.
@@ -89,4 +92,17 @@ namespace compax::fem
   make_cylindrical_compact(dealii::Triangulation<3> &tria,
                            const TabletGeometry     &geometry,
                            unsigned int              n_global_refinements = 0);
+
+  /**
+   * Fills the empty @p tria with the quarter x >= 0, y >= 0 of the 3-D
+   * cylinder of make_cylindrical_compact(): deal.II's three-cell quarter
+   * disk extruded along z with cells about as tall as wide, boundary ids
+   * die_wall, lower_punch, upper_punch, symmetry_x (x = 0) and symmetry_y
+   * (y = 0), and the CylindricalManifold on the die wall;
+   * @p n_global_refinements refines it further.
+   */
+  void
+  make_quarter_cylindrical_compact(dealii::Triangulation<3> &tria,
+                                   const TabletGeometry     &geometry,
+                                   unsigned int n_global_refinements = 0);
 } // namespace compax::fem

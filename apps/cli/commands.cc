@@ -5,6 +5,7 @@
 #include "apps/die/die_command.h"
 #include "apps/mcdem/calibrate_command.h"
 #include "apps/mcdem/mcdem_command.h"
+#include "apps/tablet/tablet_command.h"
 
 namespace compax::cli
 {
@@ -17,6 +18,7 @@ namespace compax::cli
     commands.push_back(make_crystal_command());
     commands.push_back(make_mcdem_command());
     commands.push_back(make_calibrate_command());
+    commands.push_back(make_tablet_command());
     return commands;
   }
 } // namespace compax::cli

@@ -1,0 +1,850 @@
+#include "apps/tablet/tablet_command.h"
+
+#include "apps/cli/input_error.h"
+#include "apps/cli/parameters.h"
+#include "apps/common/csv_writer.h"
+#include "apps/common/gnuplot.h"
+#include "fem/drucker_prager_cap.h"
+#include "fem/linear_elastic_material.h"
+#include "fem/tablet_process.h"
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+namespace compax::cli
+{
+  namespace
+  {
+    using dealii::Patterns::Bool;
+    using dealii::Patterns::Integer;
+    using dealii::Patterns::Selection;
+
+    /// Everything a run needs, read from the parameters.
+    struct TabletSetup
+    {
+      bool                                      three_d = false;
+      fem::TabletSolverSettings                 solver;
+      fem::TabletProcess                        process;
+      std::shared_ptr<const fem::MaterialModel> material;
+      unsigned int                              output_interval     = 10;
+      bool                                      write_fields        = true;
+      unsigned int                              checkpoint_interval = 25;
+      std::string                               resume_from;
+    };
+
+    void
+    declare(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Geometry");
+      declare_quantity(prm,
+                       "Die diameter",
+                       "10e-3",
+                       positive(),
+                       "m",
+                       "Inner diameter D of the cylindrical die (flat-faced "
+                       "punches of the same diameter).");
+      declare_quantity(prm,
+                       "Fill height",
+                       "7e-3",
+                       positive(),
+                       "m",
+                       "Height of the powder column as filled; the die is "
+                       "filled to its top, so this is also the die-top height "
+                       "above the lower punch.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Model",
+                        "axisymmetric",
+                        Selection("axisymmetric|quarter-3d"),
+                        "axisymmetric: r-z model with hoop terms (default); "
+                        "quarter-3d: quarter cylinder with symmetry planes. "
+                        "Unit: none.");
+      declare_quantity(prm,
+                       "Radial cells",
+                       "8",
+                       Integer(1, 256),
+                       "-",
+                       "Cells across the radius of the coarse r-z mesh (the "
+                       "axial count makes cells square). Ignored by "
+                       "quarter-3d.");
+      declare_quantity(prm,
+                       "Refinements",
+                       "0",
+                       Integer(0, 6),
+                       "-",
+                       "Global refinements of the coarse mesh.");
+      declare_quantity(prm,
+                       "Polynomial degree",
+                       "1",
+                       Integer(1, 3),
+                       "-",
+                       "Degree of the displacement finite element.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Material");
+      prm.declare_entry("Model",
+                        "drucker-prager-cap",
+                        Selection("drucker-prager-cap|linear-elastic"),
+                        "Constitutive law of the compact. Unit: none.");
+      declare_quantity(prm,
+                       "Initial relative density",
+                       "0.5",
+                       open(0.0, 1.0),
+                       "-",
+                       "Relative density of the powder as filled.");
+      prm.declare_entry("DPC table",
+                        "",
+                        dealii::Patterns::Anything(),
+                        "CSV file with the density-dependent Drucker-Prager "
+                        "Cap data, header relative_density,cohesion,"
+                        "friction_angle_deg,cap_eccentricity,cap_pressure,"
+                        "youngs_modulus,poisson_ratio (Pa, degrees); empty: "
+                        "the built-in microcrystalline cellulose table. "
+                        "Unit: file path.");
+      declare_quantity(prm,
+                       "Young's modulus",
+                       "5e9",
+                       positive(),
+                       "Pa",
+                       "Young's modulus of the linear-elastic model.");
+      declare_quantity(prm,
+                       "Poisson's ratio",
+                       "0.3",
+                       open(-1.0, 0.5),
+                       "-",
+                       "Poisson's ratio of the linear-elastic model.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Die");
+      declare_quantity(prm,
+                       "Wall friction coefficient",
+                       "0.25",
+                       non_negative(),
+                       "-",
+                       "Coulomb friction coefficient mu between compact "
+                       "and die wall (punch faces are frictionless).");
+      prm.declare_entry("Wall friction table",
+                        "",
+                        dealii::Patterns::Anything(),
+                        "Friction coefficient as a function of the relative "
+                        "density at the wall, as 'density:mu' pairs in "
+                        "increasing density, e.g. '0.5:0.4, 0.9:0.2' "
+                        "(linear in between, constant beyond); empty: the "
+                        "constant Wall friction coefficient. Unit: -:-.");
+      declare_quantity(prm,
+                       "Entry taper length",
+                       "0",
+                       non_negative(),
+                       "m",
+                       "Length below the die top over which the bore widens "
+                       "(entry chamfer); the tablet then leaves the wall "
+                       "gradually during ejection. 0: sharp die top.");
+      declare_quantity(prm,
+                       "Entry taper opening",
+                       "20e-6",
+                       non_negative(),
+                       "m",
+                       "Radial widening of the bore at the die top.");
+      declare_quantity(prm,
+                       "Penalty factor",
+                       "100",
+                       positive(),
+                       "-",
+                       "Contact penalty = factor x largest current Young's "
+                       "modulus / smallest cell size; penetration is about "
+                       "pressure x cell size / (factor E).");
+      declare_quantity(prm,
+                       "Tangential penalty ratio",
+                       "0.1",
+                       positive(),
+                       "-",
+                       "Stick stiffness of the wall friction as a multiple "
+                       "of the normal penalty.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Process");
+      declare_quantity(prm,
+                       "Compaction displacement",
+                       "3.11e-3",
+                       positive(),
+                       "m",
+                       "Upper punch travel into the die (default: from "
+                       "density 0.5 to 0.9 for a 7 mm fill).");
+      declare_quantity(prm,
+                       "Unloading displacement",
+                       "0.3e-3",
+                       non_negative(),
+                       "m",
+                       "Upper punch withdrawal after compaction (more than "
+                       "the elastic springback, so the punch separates).");
+      declare_quantity(prm,
+                       "Ejection displacement",
+                       "7.2e-3",
+                       non_negative(),
+                       "m",
+                       "Lower punch travel during ejection; beyond the fill "
+                       "height the tablet has left the die.");
+      declare_quantity(prm,
+                       "Compaction steps",
+                       "60",
+                       Integer(1, 100000),
+                       "-",
+                       "Load steps of the compaction stage.");
+      declare_quantity(prm,
+                       "Unloading steps",
+                       "15",
+                       Integer(0, 100000),
+                       "-",
+                       "Load steps of the unloading stage (0: none; then "
+                       "Ejection steps must be 0 too).");
+      declare_quantity(prm,
+                       "Ejection steps",
+                       "40",
+                       Integer(0, 100000),
+                       "-",
+                       "Load steps of the ejection stage (0: no ejection).");
+      declare_quantity(prm,
+                       "Punch speed",
+                       "0.05",
+                       positive(),
+                       "m/s",
+                       "Punch speed that turns travel into the time column "
+                       "(the model is quasi-static).");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Solver");
+      declare_quantity(prm,
+                       "Tolerance",
+                       "1e-8",
+                       open(0.0, 1.0),
+                       "-",
+                       "Newton tolerance on the residual relative to the "
+                       "internal and contact forces.");
+      declare_quantity(prm,
+                       "Max iterations",
+                       "30",
+                       Integer(1, 1000),
+                       "-",
+                       "Newton iterations per load increment.");
+      declare_quantity(prm,
+                       "Max step cuts",
+                       "8",
+                       Integer(0, 30),
+                       "-",
+                       "Times a load step may be halved before the run "
+                       "stops without convergence.");
+      prm.declare_entry("Print Newton residuals",
+                        "false",
+                        Bool(),
+                        "Print every Newton residual (for diagnosing a "
+                        "run that does not converge). Unit: none.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Output");
+      declare_quantity(prm,
+                       "Field interval",
+                       "10",
+                       Integer(1, 100000),
+                       "-",
+                       "Write the PVD/VTU fields every this many steps (and "
+                       "at the end of every stage).");
+      prm.declare_entry("Write fields",
+                        "true",
+                        Bool(),
+                        "Write PVD/VTU fields. Unit: none.");
+      declare_quantity(prm,
+                       "Checkpoint interval",
+                       "25",
+                       Integer(0, 100000),
+                       "-",
+                       "Write a checkpoint (folder 'checkpoint' in the "
+                       "output) every this many steps and when a step does "
+                       "not converge; 0: none.");
+      prm.declare_entry("Resume from",
+                        "",
+                        dealii::Patterns::Anything(),
+                        "Output folder of an earlier run with the same "
+                        "parameters and number of MPI ranks: continue its "
+                        "cycle from its checkpoint (its rows and fields are "
+                        "copied into the new output). Empty: start afresh. "
+                        "Unit: folder path.");
+      prm.leave_subsection();
+    }
+
+    TabletSetup
+    read(dealii::ParameterHandler &prm)
+    {
+      TabletSetup s;
+      prm.enter_subsection("Geometry");
+      s.solver.geometry.die_diameter = prm.get_double("Die diameter");
+      s.solver.geometry.fill_height  = prm.get_double("Fill height");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Mesh");
+      s.three_d                        = prm.get("Model") == "quarter-3d";
+      s.solver.geometry.n_radial_cells = prm.get_integer("Radial cells");
+      s.solver.refinements             = prm.get_integer("Refinements");
+      s.solver.degree                  = prm.get_integer("Polynomial degree");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Material");
+      s.solver.initial_relative_density
+        = prm.get_double("Initial relative density");
+      if (prm.get("Model") == "linear-elastic")
+        s.material = std::make_shared<fem::LinearElasticMaterial>(
+          prm.get_double("Young's modulus"), prm.get_double("Poisson's ratio"));
+      else
+        {
+          const std::string file = prm.get("DPC table");
+          try
+            {
+              s.material = std::make_shared<fem::DruckerPragerCap>(
+                file.empty() ? fem::DpcTable::microcrystalline_cellulose()
+                             : fem::DpcTable::read_csv(file));
+            }
+          catch (const std::exception &e)
+            {
+              prm.leave_subsection();
+              reject_entry("DPC table", file, e.what());
+            }
+        }
+      prm.leave_subsection();
+
+      prm.enter_subsection("Die");
+      s.solver.wall_friction  = prm.get_double("Wall friction coefficient");
+      s.solver.penalty_factor = prm.get_double("Penalty factor");
+      {
+        const std::string table = prm.get("Wall friction table");
+        for (const std::string &pair :
+             dealii::Utilities::split_string_list(table, ','))
+          {
+            const auto parts = dealii::Utilities::split_string_list(pair, ':');
+            double     rho = -1.0, mu = -1.0;
+            try
+              {
+                if (parts.size() == 2)
+                  {
+                    rho = std::stod(parts[0]);
+                    mu  = std::stod(parts[1]);
+                  }
+              }
+            catch (const std::exception &)
+              {
+                rho = -1.0;
+              }
+            if (!(rho > 0.0 && rho <= 1.0 && mu >= 0.0)
+                || (!s.solver.wall_friction_table.empty()
+                    && !(rho > s.solver.wall_friction_table.back().first)))
+              {
+                prm.leave_subsection();
+                reject_entry("Wall friction table",
+                             table,
+                             "expected 'density:mu' pairs with densities "
+                             "increasing in (0, 1] and mu >= 0");
+              }
+            s.solver.wall_friction_table.emplace_back(rho, mu);
+          }
+      }
+      s.solver.die_top_taper_length  = prm.get_double("Entry taper length");
+      s.solver.die_top_taper_opening = prm.get_double("Entry taper opening");
+      s.solver.tangential_penalty_ratio
+        = prm.get_double("Tangential penalty ratio");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Process");
+      s.process.compaction_displacement
+        = prm.get_double("Compaction displacement");
+      s.process.unloading_displacement
+        = prm.get_double("Unloading displacement");
+      s.process.ejection_displacement = prm.get_double("Ejection displacement");
+      s.process.compaction_steps      = prm.get_integer("Compaction steps");
+      s.process.unloading_steps       = prm.get_integer("Unloading steps");
+      s.process.ejection_steps        = prm.get_integer("Ejection steps");
+      s.process.punch_speed           = prm.get_double("Punch speed");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Solver");
+      s.solver.tolerance      = prm.get_double("Tolerance");
+      s.solver.max_iterations = prm.get_integer("Max iterations");
+      s.solver.max_step_cuts  = prm.get_integer("Max step cuts");
+      s.solver.verbose        = prm.get_bool("Print Newton residuals");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Output");
+      s.output_interval     = prm.get_integer("Field interval");
+      s.write_fields        = prm.get_bool("Write fields");
+      s.checkpoint_interval = prm.get_integer("Checkpoint interval");
+      s.resume_from         = prm.get("Resume from");
+      if (!s.resume_from.empty()
+          && !std::filesystem::is_directory(std::filesystem::path(s.resume_from)
+                                            / "checkpoint"))
+        {
+          prm.leave_subsection();
+          reject_entry("Resume from",
+                       s.resume_from,
+                       "has no checkpoint folder (run with Checkpoint "
+                       "interval > 0)");
+        }
+      prm.leave_subsection();
+
+      if (s.process.ejection_steps > 0 && s.process.unloading_steps == 0)
+        reject_entry("Ejection steps",
+                     std::to_string(s.process.ejection_steps),
+                     "ejection needs an unloading stage first (Unloading "
+                     "steps > 0)");
+      if (!(s.process.compaction_displacement < s.solver.geometry.fill_height))
+        reject_entry("Compaction displacement",
+                     std::to_string(s.process.compaction_displacement),
+                     "must be smaller than the fill height "
+                       + std::to_string(s.solver.geometry.fill_height) + " m");
+      return s;
+    }
+
+    /// Extremes of the cycle, printed at the end.
+    struct Summary
+    {
+      double max_upper_pressure  = 0.0;
+      double density_at_max      = 0.0;
+      double density_unloaded    = 0.0;
+      double residual_wall       = 0.0;
+      double density_out_of_die  = 0.0;
+      double peak_ejection_force = 0.0;
+      bool   ejected             = false;
+    };
+
+    constexpr std::uint64_t steps_magic = 0x636f6d7061785331; // compaxS1
+
+    /// The process settings a checkpoint was made with, to refuse resuming
+    /// another cycle.
+    bool
+    same_process(const fem::TabletProcess &a, const fem::TabletProcess &b)
+    {
+      return a.compaction_displacement == b.compaction_displacement
+             && a.unloading_displacement == b.unloading_displacement
+             && a.ejection_displacement == b.ejection_displacement
+             && a.compaction_steps == b.compaction_steps
+             && a.unloading_steps == b.unloading_steps
+             && a.ejection_steps == b.ejection_steps
+             && a.punch_speed == b.punch_speed;
+    }
+
+    template <int dim>
+    int
+    run_model(const TabletSetup           &setup,
+              const std::filesystem::path &folder,
+              MPI_Comm                     comm)
+    {
+      namespace fs    = std::filesystem;
+      const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
+      fem::TabletSolver<dim> solver(setup.solver, setup.material, comm);
+      const double           area = solver.punch_area();
+      if (root)
+        std::cout << "compax tablet: "
+                  << (dim == 2 ? "axisymmetric" : "3-D quarter") << " model, "
+                  << solver.n_cells() << " cells, " << solver.n_dofs()
+                  << " unknowns, "
+                  << dealii::Utilities::MPI::n_mpi_processes(comm)
+                  << " MPI rank(s), material " << setup.material->name()
+                  << '\n';
+
+      std::optional<CsvWriter> csv;
+      if (root)
+        csv.emplace(folder / "tablet.csv",
+                    std::vector<std::string>{"step",
+                                             "time",
+                                             "stage",
+                                             "upper_punch_displacement",
+                                             "lower_punch_displacement",
+                                             "upper_punch_pressure",
+                                             "lower_punch_pressure",
+                                             "die_wall_pressure",
+                                             "ejection_force",
+                                             "mean_relative_density",
+                                             "upper_punch_force",
+                                             "lower_punch_force",
+                                             "die_wall_normal_force",
+                                             "die_wall_friction_force",
+                                             "die_wall_contact_area",
+                                             "sliding_fraction",
+                                             "newton_iterations"});
+      std::vector<std::pair<double, std::string>> pvd;
+      std::vector<fem::TabletStep>                history;
+      Summary                                     summary;
+      const unsigned int n_steps      = fem::n_steps(setup.process);
+      fem::TabletStage   previous     = fem::TabletStage::compaction;
+      unsigned int       last_written = 0;
+      fem::TabletStep    last;
+
+      auto write_pvd = [&]() {
+        if (root)
+          {
+            std::ofstream out(folder / "tablet.pvd");
+            dealii::DataOutBase::write_pvd_record(out, pvd);
+          }
+      };
+      auto write_fields = [&](const fem::TabletStep &st) {
+        if (!setup.write_fields)
+          return;
+        pvd.emplace_back(st.time, solver.write_fields(folder, st.index));
+        last_written = st.index;
+        write_pvd();
+      };
+
+      // Summary and CSV row of one step (also for the replayed steps of a
+      // resumed run).
+      auto record = [&](const fem::TabletStep &st) {
+        history.push_back(st);
+        const auto  &f = st.forces;
+        const double wall_pressure
+          = f.die_wall_contact_area > 0.0
+              ? f.die_wall_normal_force / f.die_wall_contact_area
+              : 0.0;
+        const double ejection_force
+          = st.stage == fem::TabletStage::ejection ? f.lower_punch_force : 0.0;
+        if (st.stage == fem::TabletStage::compaction
+            && f.upper_punch_force / area >= summary.max_upper_pressure)
+          {
+            summary.max_upper_pressure = f.upper_punch_force / area;
+            summary.density_at_max     = st.mean_relative_density;
+          }
+        if (st.stage == fem::TabletStage::unloading)
+          {
+            summary.density_unloaded = st.mean_relative_density;
+            summary.residual_wall    = wall_pressure;
+          }
+        if (st.stage == fem::TabletStage::ejection)
+          {
+            summary.peak_ejection_force
+              = std::max(summary.peak_ejection_force, ejection_force);
+            summary.density_out_of_die = st.mean_relative_density;
+            summary.ejected            = f.die_wall_normal_force == 0.0;
+          }
+        if (root)
+          {
+            *csv << static_cast<long long>(st.index) << st.time
+                 << fem::stage_name(st.stage) << st.upper_punch_displacement
+                 << st.lower_punch_displacement << f.upper_punch_force / area
+                 << f.lower_punch_force / area << wall_pressure
+                 << ejection_force << st.mean_relative_density
+                 << f.upper_punch_force << f.lower_punch_force
+                 << f.die_wall_normal_force << f.die_wall_friction_force
+                 << f.die_wall_contact_area << f.sliding_fraction
+                 << static_cast<long long>(st.newton_iterations);
+            csv->end_row();
+          }
+        return wall_pressure;
+      };
+
+      // Checkpoint: solver state of every rank, the steps so far and the
+      // field list, written beside the old one and swapped in.
+      auto checkpoint = [&]() {
+        const fs::path fresh = folder / "checkpoint.new";
+        if (root)
+          fs::create_directories(fresh);
+        MPI_Barrier(comm);
+        solver.save_state(fresh);
+        if (root)
+          {
+            std::ofstream       out(fresh / "steps.bin", std::ios::binary);
+            const std::uint64_t n = history.size();
+            out.write(reinterpret_cast<const char *>(&steps_magic),
+                      sizeof(steps_magic));
+            out.write(reinterpret_cast<const char *>(&setup.process),
+                      sizeof(setup.process));
+            out.write(reinterpret_cast<const char *>(&n), sizeof(n));
+            out.write(reinterpret_cast<const char *>(history.data()),
+                      n * sizeof(fem::TabletStep));
+            std::ofstream fields(fresh / "fields.txt");
+            fields << std::setprecision(17);
+            for (const auto &[time, name] : pvd)
+              fields << time << ' ' << name << '\n';
+          }
+        MPI_Barrier(comm);
+        if (root)
+          {
+            fs::remove_all(folder / "checkpoint");
+            fs::rename(fresh, folder / "checkpoint");
+          }
+        MPI_Barrier(comm);
+      };
+
+      unsigned int resume_after = 0;
+      if (!setup.resume_from.empty())
+        {
+          const fs::path               old = fs::path(setup.resume_from);
+          std::vector<fem::TabletStep> done;
+          std::string                  error;
+          if (root)
+            {
+              std::ifstream      in(old / "checkpoint" / "steps.bin",
+                               std::ios::binary);
+              std::uint64_t      magic = 0, n = 0;
+              fem::TabletProcess p;
+              in.read(reinterpret_cast<char *>(&magic), sizeof(magic));
+              in.read(reinterpret_cast<char *>(&p), sizeof(p));
+              in.read(reinterpret_cast<char *>(&n), sizeof(n));
+              if (!in || magic != steps_magic || n == 0 || n > n_steps + 1)
+                error = "its checkpoint is unreadable";
+              else if (!same_process(p, setup.process))
+                error = "its checkpoint is of another punch cycle (Process "
+                        "parameters differ)";
+              else
+                {
+                  done.resize(n);
+                  in.read(reinterpret_cast<char *>(done.data()),
+                          n * sizeof(fem::TabletStep));
+                  if (!in)
+                    error = "its checkpoint is truncated";
+                }
+            }
+          error = dealii::Utilities::MPI::broadcast(comm, error, 0);
+          if (!error.empty())
+            throw InputError("entry 'Resume from' = " + setup.resume_from + ": "
+                             + error);
+          try
+            {
+              solver.load_state(old / "checkpoint");
+            }
+          catch (const std::exception &e)
+            {
+              throw InputError("entry 'Resume from' = " + setup.resume_from
+                               + ": " + e.what());
+            }
+          // A checkpoint of the initial state only: start afresh.
+          if (done.size() == 1)
+            done.clear();
+          unsigned int written = 0;
+          if (root && !done.empty())
+            {
+              std::ifstream fields(old / "checkpoint" / "fields.txt");
+              double        time;
+              std::string   name;
+              while (fields >> time >> name)
+                {
+                  pvd.emplace_back(time, name);
+                  // tablet_NNNN.pvtu and its pieces tablet_NNNN.<rank>.vtu
+                  const std::string stem = name.substr(0, name.find('.'));
+                  written = std::stoul(stem.substr(stem.find('_') + 1));
+                  for (const auto &e : fs::directory_iterator(old))
+                    if (e.path().filename().string().rfind(stem + ".", 0) == 0)
+                      fs::copy_file(e.path(),
+                                    folder / e.path().filename(),
+                                    fs::copy_options::overwrite_existing);
+                }
+              write_pvd();
+              std::cout << "Resuming after step " << done.back().index
+                        << " from " << setup.resume_from << '\n';
+            }
+          // Every rank replays the steps: the field output decisions that
+          // follow are collective.
+          std::uint64_t n_done = done.size();
+          MPI_Bcast(&n_done, 1, MPI_UINT64_T, 0, comm);
+          done.resize(n_done);
+          MPI_Bcast(done.data(),
+                    static_cast<int>(n_done * sizeof(fem::TabletStep)),
+                    MPI_BYTE,
+                    0,
+                    comm);
+          last_written = dealii::Utilities::MPI::broadcast(comm, written, 0);
+          for (const auto &st : done)
+            record(st);
+          if (!history.empty())
+            {
+              last     = history.back();
+              previous = last.stage;
+            }
+          resume_after = dealii::Utilities::MPI::broadcast(comm, last.index, 0);
+        }
+
+      const auto start   = std::chrono::steady_clock::now();
+      auto       on_step = [&](const fem::TabletStep &st) {
+        // Fields at the end of each stage (the step before a new one) and
+        // every output interval.
+        if (st.stage != previous && last.index != last_written)
+          write_fields(last);
+        previous                   = st.stage;
+        last                       = st;
+        const double wall_pressure = record(st);
+        if (root)
+          {
+            const auto  &f       = st.forces;
+            const double elapsed = std::chrono::duration<double>(
+                                     std::chrono::steady_clock::now() - start)
+                                     .count();
+            const unsigned int done_here = st.index - resume_after;
+            const double       left      = done_here > 0
+                                                   ? elapsed * (n_steps - st.index) / done_here
+                                                   : 0.0;
+            std::printf("step %4u/%u %-10s rho %.4f  upper %8.2f MPa  wall "
+                              "%7.2f MPa  lower %9.2f N  Newton %2u  %.1f s, ~%.0f "
+                              "s left\n",
+                        st.index,
+                        n_steps,
+                        fem::stage_name(st.stage).c_str(),
+                        st.mean_relative_density,
+                        f.upper_punch_force / area * 1e-6,
+                        wall_pressure * 1e-6,
+                        f.lower_punch_force,
+                        st.newton_iterations,
+                        elapsed,
+                        left);
+            std::fflush(stdout);
+          }
+        if (st.index % setup.output_interval == 0)
+          write_fields(st);
+        if (setup.checkpoint_interval > 0 && st.index > 0
+            && st.index % setup.checkpoint_interval == 0)
+          checkpoint();
+      };
+
+      const bool converged = fem::run_tablet_process<dim>(solver,
+                                                          setup.process,
+                                                          on_step,
+                                                          resume_after);
+      if (last.index != last_written)
+        write_fields(last);
+      if (!converged && setup.checkpoint_interval > 0)
+        checkpoint();
+      if (root)
+        {
+          csv->close();
+          std::cout << "Tablet cycle " << (converged ? "completed" : "STOPPED")
+                    << ":\n  max upper punch pressure     "
+                    << summary.max_upper_pressure * 1e-6
+                    << " MPa\n  rel. density at max pressure "
+                    << summary.density_at_max << " (in die)\n";
+          if (setup.process.unloading_steps > 0)
+            std::cout << "  rel. density after unloading "
+                      << summary.density_unloaded
+                      << " (in die)\n  residual die-wall pressure   "
+                      << summary.residual_wall * 1e-6 << " MPa\n";
+          if (setup.process.ejection_steps > 0)
+            std::cout << "  peak ejection force          "
+                      << summary.peak_ejection_force
+                      << " N\n  rel. density out of die      "
+                      << summary.density_out_of_die
+                      << (summary.ejected ? "" : " (tablet still in the die)")
+                      << '\n';
+          render_png(folder,
+                     "tablet.gp",
+                     "set datafile separator ','\n"
+                     "set key autotitle columnhead\n"
+                     "set multiplot layout 2,1\n"
+                     "set xlabel 'time [s]'\n"
+                     "set ylabel 'pressure [MPa]'\n"
+                     "plot 'tablet.csv' using 2:($6/1e6) with lines lw 2 "
+                     "title 'upper punch', '' using 2:($7/1e6) with lines lw "
+                     "2 title 'lower punch', '' using 2:($8/1e6) with lines "
+                     "lw 2 title 'die wall'\n"
+                     "set ylabel 'ejection force [N]'\n"
+                     "plot 'tablet.csv' using 2:9 with lines lw 2 title "
+                     "'ejection force'\n"
+                     "unset multiplot\n",
+                     "tablet.png");
+        }
+      return converged ? success : not_converged;
+    }
+
+    class TabletCommand : public Command
+    {
+    public:
+      std::string
+      name() const override
+      {
+        return "tablet";
+      }
+
+      std::string
+      summary() const override
+      {
+        return "continuum die compaction, unloading and ejection (deal.II)";
+      }
+
+      std::string
+      description() const override
+      {
+        return "Quasi-static finite element model of a powder compact in a "
+               "rigid cylindrical die with flat-faced punches: the upper "
+               "punch compacts the powder (lower punch fixed), is withdrawn "
+               "(the compact separates freely), and the lower punch ejects "
+               "the tablet, which expands freely above the die. "
+               "Axisymmetric r-z model (or a 3-D quarter cylinder), updated "
+               "Lagrangian large deformation, Newton with consistent "
+               "tangent, penalty contact with Coulomb wall friction, "
+               "Trilinos linear algebra on a distributed mesh (runs under "
+               "mpirun). Materials: density-dependent Drucker-Prager Cap "
+               "(tables in CSV) or linear elasticity.\n\nWrites tablet.csv "
+               "(step,time,stage,punch displacements, upper/lower punch and "
+               "mean die-wall pressures, ejection force, mean relative "
+               "density, forces, ...; SI units, pressures positive in "
+               "compression), tablet.pvd with tablet_NNNN.pvtu/vtu fields "
+               "(displacement, relative density, stress, plastic strain), "
+               "tablet.png (pressures and ejection force against time) with "
+               "its gnuplot script, and prints progress and a summary.\n\n"
+               "Built-in default: a 10 mm flat-faced tablet of "
+               "microcrystalline cellulose (built-in DPC table), 7 mm fill "
+               "at relative density 0.5, compacted to 0.9 in the die, "
+               "unloaded and ejected, mu = 0.25.";
+      }
+
+      void
+      declare_parameters(dealii::ParameterHandler &prm) const override
+      {
+        declare(prm);
+      }
+
+      void
+      check_parameters(dealii::ParameterHandler &prm) const override
+      {
+        read(prm);
+      }
+
+      int
+      run(dealii::ParameterHandler    &prm,
+          const std::filesystem::path &folder) const override
+      {
+        // The CLI does not start MPI; do it here when mpirun has not.
+        std::unique_ptr<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+        int initialized = 0;
+        MPI_Initialized(&initialized);
+        if (!initialized)
+          {
+            static int    argc   = 1;
+            static char   name[] = "compax";
+            static char  *args[] = {name, nullptr};
+            static char **argv   = args;
+            mpi
+              = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc,
+                                                                           argv,
+                                                                           1);
+          }
+        const TabletSetup setup = read(prm);
+        // All ranks write their field pieces into rank 0's folder.
+        std::string shared = folder.string();
+        shared   = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, shared, 0);
+        int code = setup.three_d ? run_model<3>(setup, shared, MPI_COMM_WORLD)
+                                 : run_model<2>(setup, shared, MPI_COMM_WORLD);
+        return code;
+      }
+    };
+  } // namespace
+
+  std::unique_ptr<Command>
+  make_tablet_command()
+  {
+    return std::make_unique<TabletCommand>();
+  }
+} // namespace compax::cli

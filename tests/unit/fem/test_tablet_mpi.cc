@@ -1,0 +1,67 @@
+// The distributed model gives the punch forces of the one-rank model. Run
+// as `mpirun -np 2 compax_fem_tests --gtest_filter='TabletMpi.*'` (ctest
+// label mpi); on one rank it compares a run with itself.
+#include "fem/drucker_prager_cap.h"
+#include "fem/tablet_process.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+namespace fem = compax::fem;
+
+namespace
+{
+  std::vector<fem::TabletStep>
+  cycle(MPI_Comm comm)
+  {
+    fem::TabletSolverSettings s;
+    s.geometry.die_diameter    = 10e-3;
+    s.geometry.fill_height     = 7e-3;
+    s.geometry.n_radial_cells  = 6;
+    s.wall_friction            = 0.25;
+    s.initial_relative_density = 0.5;
+    fem::TabletSolver<2> solver(s,
+                                std::make_shared<fem::DruckerPragerCap>(
+                                  fem::DpcTable::microcrystalline_cellulose()),
+                                comm);
+    fem::TabletProcess   p;
+    p.compaction_displacement = 2.5e-3;
+    p.compaction_steps        = 12;
+    p.unloading_steps         = 4;
+    p.ejection_displacement   = 1e-3;
+    p.ejection_steps          = 4;
+    std::vector<fem::TabletStep> steps;
+    EXPECT_TRUE(fem::run_tablet_process<2>(
+      solver, p, [&](const fem::TabletStep &st) { steps.push_back(st); }));
+    return steps;
+  }
+} // namespace
+
+TEST(TabletMpi, DistributedRunGivesSerialPunchForces)
+{
+  const auto distributed = cycle(MPI_COMM_WORLD);
+  const auto serial      = cycle(MPI_COMM_SELF);
+  ASSERT_EQ(distributed.size(), serial.size());
+  double scale = 0.0;
+  for (const auto &st : serial)
+    scale = std::max(scale, st.forces.upper_punch_force);
+  ASSERT_GT(scale, 0.0);
+  for (std::size_t k = 0; k < serial.size(); ++k)
+    {
+      const auto &a = distributed[k].forces, &b = serial[k].forces;
+      // Both converge to the Newton tolerance 1e-8 from different round-off.
+      EXPECT_NEAR(a.upper_punch_force, b.upper_punch_force, 1e-6 * scale);
+      EXPECT_NEAR(a.lower_punch_force, b.lower_punch_force, 1e-6 * scale);
+      EXPECT_NEAR(a.die_wall_normal_force,
+                  b.die_wall_normal_force,
+                  1e-6 * scale);
+      EXPECT_NEAR(distributed[k].mean_relative_density,
+                  serial[k].mean_relative_density,
+                  1e-9);
+    }
+}
