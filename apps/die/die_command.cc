@@ -55,25 +55,50 @@ namespace compax::cli
         }
     }
 
+    /// Punch and die-wall pressure, and Z, against in-die density, with the
+    /// fits of Eqs. (14) and (15) where the study determined them.
     void
-    plot(const std::filesystem::path &folder)
+    plot(const std::filesystem::path &folder, const CompactionFits &fits)
     {
+      std::ostringstream functions, pressure_fit, coordination_fit;
+      functions.precision(10);
+      if (fits.punch_pressure && fits.coordination)
+        {
+          functions << "Kp = " << fits.punch_pressure->K_p
+                    << "; bp = " << fits.punch_pressure->beta_p
+                    << "; rcp = " << fits.coordination->rho_c << "\n"
+                    << "p(x) = x > rcp ? Kp * (x - rcp)**bp / 1e6 : 1/0\n";
+          pressure_fit << ", p(x) with lines dt 2 lw 2 title 'Eq. (15) fit'";
+        }
+      if (fits.coordination)
+        {
+          functions << "Zc = " << fits.coordination->Z_c
+                    << "; Z0 = " << fits.coordination->Z_0
+                    << "; rcz = " << fits.coordination->rho_c
+                    << "; th = " << fits.coordination->theta << "\n"
+                    << "z(x) = x > rcz ? Zc + Z0 * (x - rcz)**th : 1/0\n";
+          coordination_fit
+            << ", z(x) with lines dt 2 lw 2 title 'Eq. (14) fit'";
+        }
       render_png(folder,
                  "die.gp",
-                 "set datafile columnheaders\n"
-                 "set multiplot layout 1,2\n"
-                 "set xlabel 'in-die relative density [-]'\n"
-                 "set ylabel 'pressure [MPa]'\n"
-                 "plot 'die.csv' using (column('relative_density')):"
-                 "(column('upper_punch_pressure')/1e6) with linespoints "
-                 "pt 7 ps 0.4 title 'upper punch', '' using "
-                 "(column('relative_density')):(column('die_wall_pressure')"
-                 "/1e6) with linespoints pt 7 ps 0.4 title 'die wall'\n"
-                 "set ylabel 'mean coordination number Z [-]'\n"
-                 "plot 'die.csv' using (column('relative_density')):"
-                 "(column('coordination_number')) with points pt 7 ps 0.5 "
-                 "title 'Z'\n"
-                 "unset multiplot\n",
+                 "set datafile columnheaders\n" + functions.str()
+                   + "set samples 400\n"
+                     "set multiplot layout 1,2\n"
+                     "set xlabel 'in-die relative density [-]'\n"
+                     "set ylabel 'pressure [MPa]'\n"
+                     "plot 'die.csv' using (column('relative_density')):"
+                     "(column('upper_punch_pressure')/1e6) with linespoints "
+                     "pt 7 ps 0.4 title 'upper punch', '' using "
+                     "(column('relative_density')):(column('die_wall_pressure')"
+                     "/1e6) with linespoints pt 7 ps 0.4 title 'die wall'"
+                   + pressure_fit.str()
+                   + "\n"
+                     "set ylabel 'mean coordination number Z [-]'\n"
+                     "plot 'die.csv' using (column('relative_density')):"
+                     "(column('coordination_number')) with points pt 7 ps "
+                     "0.5 title 'Z'"
+                   + coordination_fit.str() + "\nunset multiplot\n",
                  "die.png");
     }
 
@@ -185,8 +210,7 @@ namespace compax::cli
         csv.close();
 
         write_branches(folder / "branches.csv", die.branches());
-        write_die_fits(folder, die.records(), die.branches());
-        plot(folder);
+        plot(folder, write_die_fits(folder, die.records(), die.branches()));
 
         const double seconds = std::chrono::duration<double>(
                                  std::chrono::steady_clock::now() - started)

@@ -51,7 +51,7 @@ namespace compax::cli
     }
   } // namespace
 
-  void
+  CompactionFits
   write_die_fits(const std::filesystem::path           &folder,
                  const std::vector<dem::DieRecord>     &records,
                  const std::vector<dem::BranchSummary> &branches)
@@ -158,5 +158,6 @@ namespace compax::cli
     md << "\nSI units (K_p, sigma_res_0, E_0 in Pa). Fits need at least 5 "
           "jammed compaction steps (Eqs. 14-15), 2 unloading branches "
           "(Eqs. 17, 19, 23) and 3 branches (Eq. 24).\n";
+    return {coordination, punch};
   }
 } // namespace compax::cli

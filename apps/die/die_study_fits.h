@@ -1,8 +1,10 @@
 #pragma once
 
+#include "dem/analysis/curve_fits.h"
 #include "dem/die/die_compaction.h"
 
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 namespace compax::cli
@@ -24,7 +26,14 @@ namespace compax::cli
    * - Eq. (24) E = E_0 ((rho_min - rho_c_E)/(1 - rho_c_E))^n;
    * - nu_tablet, the mean Poisson's ratio of the branches (Sec. 5.7).
    */
-  void
+  /// The fits of the compaction path, for plotting beside the data.
+  struct CompactionFits
+  {
+    std::optional<dem::CoordinationFit>  coordination;
+    std::optional<dem::PunchPressureFit> punch_pressure;
+  };
+
+  CompactionFits
   write_die_fits(const std::filesystem::path           &folder,
                  const std::vector<dem::DieRecord>     &records,
                  const std::vector<dem::BranchSummary> &branches);
