@@ -1,5 +1,7 @@
 #include "dem/die/die_analysis.h"
 
+#include "dem/analysis/unloading_moduli.h"
+
 #include <algorithm>
 
 namespace compax::dem
@@ -50,50 +52,29 @@ namespace compax::dem
     return f;
   }
 
-  namespace
-  {
-    double
-    slope(const std::vector<double> &x, const std::vector<double> &y)
-    {
-      const double n  = x.size();
-      double       sx = 0, sy = 0, sxx = 0, sxy = 0;
-      for (std::size_t i = 0; i < x.size(); ++i)
-        {
-          sx += x[i];
-          sy += y[i];
-          sxx += x[i] * x[i];
-          sxy += x[i] * y[i];
-        }
-      const double d = n * sxx - sx * sx;
-      return d != 0.0 ? (n * sxy - sx * sy) / d : 0.0;
-    }
-  } // namespace
-
   TabletElasticity
   unloading_elasticity(const std::vector<double> &strain,
                        const std::vector<double> &axial,
                        const std::vector<double> &radial)
   {
+    // moduli_from_unloading takes the compaction strain, positive when the
+    // gap closes; here strain grows as the compact expands.
+    std::vector<double> compression(strain.size());
+    for (std::size_t i = 0; i < strain.size(); ++i)
+      compression[i] = -strain[i];
     TabletElasticity t;
-    if (axial.empty())
-      return t;
-    const double        s_max = *std::max_element(axial.begin(), axial.end());
-    std::vector<double> e, sz, sr;
-    for (std::size_t i = 0; i < axial.size(); ++i)
-      if (axial[i] >= s_max / 3.0 && axial[i] <= 2.0 * s_max / 3.0)
-        {
-          e.push_back(strain[i]);
-          sz.push_back(axial[i]);
-          sr.push_back(radial[i]);
-        }
-    t.n_points = static_cast<int>(e.size());
-    if (e.size() < 2)
-      return t;
-    const double M   = -slope(e, sz); // stress drops as the strain grows
-    const double k   = slope(sz, sr);
-    t.poisson_ratio  = k / (1.0 + k);
-    const double nu  = t.poisson_ratio;
-    t.youngs_modulus = M * (1.0 + nu) * (1.0 - 2.0 * nu) / (1.0 - nu);
+    try
+      {
+        const UnloadingModuli m
+          = moduli_from_unloading(compression, axial, radial);
+        t.youngs_modulus = m.youngs_modulus;
+        t.poisson_ratio  = m.poisson_ratio;
+        t.n_points       = static_cast<int>(m.points);
+      }
+    catch (const std::invalid_argument &)
+      {
+        // Fewer than two points in the central third: E and nu stay 0.
+      }
     return t;
   }
 } // namespace compax::dem
