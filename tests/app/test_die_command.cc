@@ -6,6 +6,8 @@
 
 #include "app_test_support.h"
 
+#include "apps/die/bed_checkpoint.h"
+
 #include <cmath>
 
 using compax::testing::AppTest;
@@ -102,4 +104,29 @@ TEST_F(DieCommand, DieNarrowerThanTwoParticlesIsRejected)
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("Die diameter"), std::string::npos) << r.err;
   EXPECT_EQ(entries(), std::vector<std::string>{"bad.prm"});
+}
+
+TEST_F(DieCommand, NonConvergenceStopsCleanlyWithTheLastGoodState)
+{
+  // One Newton iteration per attempt cannot converge: the load step is cut
+  // back, then the run stops with exit code 3, keeps the converged rows and
+  // writes the state of the last one.
+  write("stalls.prm",
+        "subsection Packing\n set Number of particles = 150\n"
+        " set Die diameter = 3e-3\nend\n"
+        "subsection Solver\n set Maximum iterations = 1\nend\n");
+  const auto r = compax("die stalls.prm -o out");
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("last converged state"), std::string::npos) << r.err;
+
+  const Csv die(folder / "out" / "die.csv");
+  ASSERT_GE(die.rows(), 1u);
+  const compax::coupling::Hdf5ArchiveReader archive(
+    (folder / "out" / "last_converged.h5").string());
+  const compax::dem::ContactModel model({5e9, 0.25, 150e6, 2.0}, 1.26e6);
+  const auto bed = compax::cli::load_bed(archive, "bed", model);
+  EXPECT_EQ(bed.particles.size(), 150u);
+  EXPECT_NEAR(bed.relative_density(),
+              die.column.at("relative_density").back(),
+              1e-9);
 }
