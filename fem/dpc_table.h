@@ -39,8 +39,9 @@ namespace compax::fem
     static DpcTable
     read_csv(const std::filesystem::path &file);
 
-    /// Built-in table for microcrystalline cellulose (Avicel PH102-like
-    /// magnitudes of the published calibrations; illustrative, not a fit).
+    /// Built-in illustrative table for a microcrystalline-cellulose-like
+    /// powder: magnitudes of the kind DPC calibrations of MCC report, not a
+    /// fit to any data set; use read_csv() for a calibrated material.
     static DpcTable
     microcrystalline_cellulose();
 

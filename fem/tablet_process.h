@@ -16,8 +16,8 @@ namespace compax::fem
     double unloading_displacement = 0.3e-3;
     /// Lower punch travel during ejection [m] (to beyond the die top).
     double       ejection_displacement = 7.2e-3;
-    unsigned int compaction_steps      = 60;
-    unsigned int unloading_steps       = 15;
+    unsigned int compaction_steps      = 240;
+    unsigned int unloading_steps       = 40;
     unsigned int ejection_steps        = 40;
     /// Punch speed that turns travel into time [m/s].
     double punch_speed = 0.05;

@@ -10,6 +10,7 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q_eulerian.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -69,6 +70,10 @@ namespace compax::fem
     /// (the matrix is gathered there); "Amesos_Mumps" would factorise in
     /// parallel but crashes in Debian 12's Trilinos build.
     std::string direct_solver = "Amesos_Klu";
+    /// "direct" (Amesos) or "gmres-amg" (GMRES with ML algebraic multigrid,
+    /// falling back to the direct solver when it fails): the iterative
+    /// solver scales to large 3-D meshes and many ranks.
+    std::string linear_solver = "direct";
   };
 
   /// Resultants of the converged state, for the whole tablet (the 3-D
@@ -87,6 +92,11 @@ namespace compax::fem
     /// Fraction of the wall contact points that slide [-].
     double sliding_fraction = 0.0;
   };
+
+  /// The die-wall friction coefficient of @p settings at relative density
+  /// @p rho.
+  double
+  wall_friction_coefficient(const TabletSolverSettings &settings, double rho);
 
   /**
    * Quasi-static die compaction, unloading and ejection of a powder compact
@@ -112,16 +122,13 @@ namespace compax::fem
    * per step here) on rotations only.
    *
    * Contact: penalty with regularised Coulomb friction (wall_contact()) on
-   * the die wall (separation allowed, no wall above die_top), frictionless
+   * the die wall (the powder fills the bore, so the gap is -u.n;
+   * separation allowed; no wall where a point is above die_top, optionally
+   * an entry taper below it), frictionless
    * penalty contact with the punch faces (which may separate), and a weak
    * bilateral spring (1e-6 of the penalty) to the lower punch that removes
    * the rigid axial motion of a tablet free of any contact.
    */
-  /// The die-wall friction coefficient of @p settings at relative density
-  /// @p rho.
-  double
-  wall_friction_coefficient(const TabletSolverSettings &settings, double rho);
-
   template <int dim>
   class TabletSolver
   {
@@ -232,6 +239,11 @@ namespace compax::fem
     void
     commit();
 
+    /// Solves matrix delta = rhs with the configured solver.
+    bool
+    linear_solve(dealii::TrilinosWrappers::MPI::Vector  &delta,
+                 dealii::TrilinosWrappers::SolverDirect &direct);
+
     double
     penalty() const;
 
@@ -254,6 +266,8 @@ namespace compax::fem
     bool   last_upper_present = true;
     /// Locally owned axial displacement unknowns.
     dealii::IndexSet axial_dofs;
+    /// Translations, the near null space for algebraic multigrid.
+    std::vector<std::vector<bool>> rigid_modes;
     std::unique_ptr<
       dealii::MappingQEulerian<dim, dealii::TrilinosWrappers::MPI::Vector>>
       mapping;

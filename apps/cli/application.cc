@@ -165,19 +165,23 @@ namespace compax::cli
         return used.str();
       }();
 
-      const int code = command.run(prm, output.staging());
+      const int  code = command.run(prm, output.staging());
+      const bool root
+        = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
       if (code == success)
         {
           output.publish();
-          std::cout << "Results in " << output.final().string() << '\n';
+          if (root)
+            std::cout << "Results in " << output.final().string() << '\n';
         }
       else if (code == not_converged)
         {
           output.publish_partial();
-          std::cerr << "compax " << command.name()
-                    << ": stopped without convergence; the last good state "
-                       "is in "
-                    << output.final().string() << '\n';
+          if (root)
+            std::cerr << "compax " << command.name()
+                      << ": stopped without convergence; the last good state "
+                         "is in "
+                      << output.final().string() << '\n';
         }
       return code;
     }

@@ -2,11 +2,31 @@
 
 #include "apps/cli/input_error.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <system_error>
-#include <unistd.h>
 
 namespace compax::cli
 {
+  namespace
+  {
+    /// Under mpirun only rank 0 creates, publishes and removes the folder;
+    /// every rank writes its pieces into the same staging path.
+    bool
+    is_root()
+    {
+      return !dealii::Utilities::MPI::job_supports_mpi()
+             || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    }
+
+    void
+    barrier()
+    {
+      if (dealii::Utilities::MPI::job_supports_mpi())
+        MPI_Barrier(MPI_COMM_WORLD);
+    }
+  } // namespace
+
   OutputDirectory::OutputDirectory(std::filesystem::path path)
       : final_path(std::move(path))
   {
@@ -37,7 +57,7 @@ namespace compax::cli
 
   OutputDirectory::~OutputDirectory()
   {
-    if (!published)
+    if (!published && is_root())
       {
         std::error_code ignored;
         std::filesystem::remove_all(staging_path, ignored);
@@ -47,8 +67,12 @@ namespace compax::cli
   void
   OutputDirectory::publish()
   {
-    std::filesystem::remove_all(final_path);
-    std::filesystem::rename(staging_path, final_path);
+    barrier();
+    if (is_root())
+      {
+        std::filesystem::remove_all(final_path);
+        std::filesystem::rename(staging_path, final_path);
+      }
     published = true;
   }
 

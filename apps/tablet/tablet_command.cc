@@ -199,13 +199,13 @@ namespace compax::cli
                        "height the tablet has left the die.");
       declare_quantity(prm,
                        "Compaction steps",
-                       "60",
+                       "240",
                        Integer(1, 100000),
                        "-",
                        "Load steps of the compaction stage.");
       declare_quantity(prm,
                        "Unloading steps",
-                       "15",
+                       "40",
                        Integer(0, 100000),
                        "-",
                        "Load steps of the unloading stage (0: none; then "
@@ -246,6 +246,14 @@ namespace compax::cli
                        "-",
                        "Times a load step may be halved before the run "
                        "stops without convergence.");
+      prm.declare_entry("Linear solver",
+                        "direct",
+                        Selection("direct|gmres-amg"),
+                        "Newton systems: direct (Trilinos Amesos KLU, robust; "
+                        "the matrix is gathered on one rank) or gmres-amg "
+                        "(GMRES with algebraic multigrid, for large 3-D "
+                        "meshes and many ranks; falls back to direct when it "
+                        "fails). Unit: none.");
       prm.declare_entry("Print Newton residuals",
                         "false",
                         Bool(),
@@ -256,7 +264,7 @@ namespace compax::cli
       prm.enter_subsection("Output");
       declare_quantity(prm,
                        "Field interval",
-                       "10",
+                       "20",
                        Integer(1, 100000),
                        "-",
                        "Write the PVD/VTU fields every this many steps (and "
@@ -267,7 +275,7 @@ namespace compax::cli
                         "Write PVD/VTU fields. Unit: none.");
       declare_quantity(prm,
                        "Checkpoint interval",
-                       "25",
+                       "50",
                        Integer(0, 100000),
                        "-",
                        "Write a checkpoint (folder 'checkpoint' in the "
@@ -381,6 +389,7 @@ namespace compax::cli
       s.solver.max_iterations = prm.get_integer("Max iterations");
       s.solver.max_step_cuts  = prm.get_integer("Max step cuts");
       s.solver.verbose        = prm.get_bool("Print Newton residuals");
+      s.solver.linear_solver  = prm.get("Linear solver");
       prm.leave_subsection();
 
       prm.enter_subsection("Output");
