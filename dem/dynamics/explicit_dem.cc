@@ -299,13 +299,13 @@ namespace compax::dem
     std::size_t old = 0;
     for (std::size_t k = 0; k < candidates.size(); ++k)
       {
-        const ImagePair &c = candidates[k];
-        PairContact     &s = next_pairs[k];
-        s.i                = c.i;
-        s.j                = c.j;
-        s.image            = c.image;
-        s.offset           = periodic_cell.image_offset(c.image);
-        s.delta_max        = 0.0;
+        const ImagePair    &c = candidates[k];
+        DynamicPairContact &s = next_pairs[k];
+        s.i                   = c.i;
+        s.j                   = c.j;
+        s.image               = c.image;
+        s.offset              = periodic_cell.image_offset(c.image);
+        s.delta_max           = 0.0;
         s.tangential.setZero();
         s.overlap      = 0.0;
         s.normal_force = 0.0;
@@ -344,7 +344,7 @@ namespace compax::dem
     const auto &law = mat.normal_law;
 
     // Particle-particle contacts.
-    for (PairContact &c : pairs)
+    for (DynamicPairContact &c : pairs)
       {
         const std::uint32_t   i = c.i, j = c.j;
         const Eigen::Vector3d d  = p.position[j] - p.position[i] + c.offset;
@@ -400,10 +400,10 @@ namespace compax::dem
       for (std::size_t i = 0; i < n; ++i)
         for (int w = 0; w < 2; ++w)
           {
-            WallContact &c     = walls[2 * i + w];
-            const double gap   = w == 0 ? p.position[i][2] - plates[0].position
-                                        : plates[1].position - p.position[i][2];
-            const double delta = p.radius[i] - gap;
+            PlateContact &c     = walls[2 * i + w];
+            const double  gap   = w == 0 ? p.position[i][2] - plates[0].position
+                                         : plates[1].position - p.position[i][2];
+            const double  delta = p.radius[i] - gap;
             if (delta <= 0.0)
               {
                 c.overlap      = delta;
@@ -505,7 +505,7 @@ namespace compax::dem
   ExplicitDem::elastic_energy() const
   {
     double e = 0.0;
-    for (const PairContact &c : pairs)
+    for (const DynamicPairContact &c : pairs)
       if (c.overlap > 0.0)
         {
           const double R
@@ -519,7 +519,7 @@ namespace compax::dem
       for (std::size_t i = 0; i < p.size(); ++i)
         for (int w = 0; w < 2; ++w)
           {
-            const WallContact &c = walls[2 * i + w];
+            const PlateContact &c = walls[2 * i + w];
             if (c.overlap <= 0.0)
               continue;
             const MulticontactAdhesiveLaw law(p.radius[i],
@@ -548,7 +548,7 @@ namespace compax::dem
   ExplicitDem::contact_count() const
   {
     std::size_t count = 0;
-    for (const PairContact &c : pairs)
+    for (const DynamicPairContact &c : pairs)
       count += c.overlap > 0.0;
     return count;
   }
@@ -558,7 +558,7 @@ namespace compax::dem
   {
     std::size_t count = 0;
     if (plates_enabled)
-      for (const WallContact &c : walls)
+      for (const PlateContact &c : walls)
         count += c.overlap > 0.0;
     return count;
   }

@@ -78,7 +78,7 @@ namespace compax::dem
    * history (delta_max of Eq. 11, the tangential spring of Eq. 4) and the
    * values of the last force evaluation.
    */
-  struct PairContact
+  struct DynamicPairContact
   {
     std::uint32_t i;
     std::uint32_t j;
@@ -96,7 +96,7 @@ namespace compax::dem
   };
 
   /// A particle's contact with one plate: history and last values.
-  struct WallContact
+  struct PlateContact
   {
     double          delta_max    = 0.0;
     Eigen::Vector3d tangential   = Eigen::Vector3d::Zero();
@@ -292,14 +292,14 @@ namespace compax::dem
     std::size_t
     wall_contact_count() const;
 
-    const std::vector<PairContact> &
+    const std::vector<DynamicPairContact> &
     pair_contacts() const
     {
       return pairs;
     }
 
     /// Contact of particle i with the bottom (0) or top (1) plate.
-    const WallContact &
+    const PlateContact &
     wall_contact(std::size_t i, int plate) const
     {
       return walls[2 * i + plate];
@@ -319,27 +319,27 @@ namespace compax::dem
     void
     compute_forces(double dt);
 
-    DemMaterial              mat;
-    PeriodicCell             periodic_cell;
-    DynamicsSettings         settings;
-    DynamicParticles         p;
-    std::vector<WallContact> walls;
-    Plate                    plates[2];
-    bool                     plates_enabled = false;
-    bool                     friction       = true;
+    DemMaterial               mat;
+    PeriodicCell              periodic_cell;
+    DynamicsSettings          settings;
+    DynamicParticles          p;
+    std::vector<PlateContact> walls;
+    Plate                     plates[2];
+    bool                      plates_enabled = false;
+    bool                      friction       = true;
 
     // Pair constants.
     double E_pp, G_pp, E_pw, G_pw, zeta_pp, zeta_pw;
 
     // Verlet list.
-    PeriodicCellGrid             grid;
-    std::vector<ImagePair>       candidates;
-    std::vector<PairContact>     pairs;
-    std::vector<PairContact>     next_pairs;
-    std::vector<Eigen::Vector3d> position_at_build;
-    std::vector<double>          radius_at_build;
-    double                       skin_at_build = 0.0;
-    bool                         list_valid    = false;
+    PeriodicCellGrid                grid;
+    std::vector<ImagePair>          candidates;
+    std::vector<DynamicPairContact> pairs;
+    std::vector<DynamicPairContact> next_pairs;
+    std::vector<Eigen::Vector3d>    position_at_build;
+    std::vector<double>             radius_at_build;
+    double                          skin_at_build = 0.0;
+    bool                            list_valid    = false;
 
     // Per-step scratch.
     std::vector<double> stiffness_sum;
