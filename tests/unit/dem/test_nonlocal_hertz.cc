@@ -534,8 +534,8 @@ TEST(NonlocalFixedPoint, DivergenceBeyondTheLimitPointIsNotConvergence)
   network.add_contact(1.0);
   network.add_influence(0, 1.0);
   std::vector<double> gamma{1.0, 1.0}, gamma_nl, force;
-  const auto result =
-    solve_nonlocal_fixed_point(network, gamma, gamma_nl, force, 1e-12, 200);
+  const auto          result
+    = solve_nonlocal_fixed_point(network, gamma, gamma_nl, force, 1e-12, 200);
   EXPECT_FALSE(result.converged);
 
   // Below the limit point the same network converges.
