@@ -11,6 +11,7 @@
 #include "dem/die/die_setup.h"
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <stdexcept>
@@ -102,6 +103,32 @@ namespace compax::cli
                  "die.png");
     }
 
+    /// The bed saved in checkpoints/branch-<k>.h5, and k.
+    dem::Bed
+    load_branch_checkpoint(const std::string       &file,
+                           const dem::ContactModel &model,
+                           int                     &branch)
+    {
+      const std::string name = std::filesystem::path(file).stem().string();
+      const auto        dash = name.rfind('-');
+      branch
+        = dash == std::string::npos ? 1 : std::atoi(name.c_str() + dash + 1);
+      if (branch < 1)
+        branch = 1;
+      try
+        {
+          const coupling::Hdf5ArchiveReader archive(file);
+          return load_bed(archive, "bed", model);
+        }
+      catch (const std::exception &e)
+        {
+          reject_entry("Protocol/Rerun branch from",
+                       file,
+                       std::string("not a compax die checkpoint (") + e.what()
+                         + ")");
+        }
+    }
+
     class DieCommand : public Command
     {
     public:
@@ -158,24 +185,40 @@ namespace compax::cli
       run(dealii::ParameterHandler    &prm,
           const std::filesystem::path &folder) const override
       {
-        DieStudy   study   = get_die_study(prm);
-        const auto started = std::chrono::steady_clock::now();
-        std::cout << "Packing " << study.deposition.n_particles
-                  << " particles by ballistic deposition in a "
-                  << study.deposition.die_diameter * 1e3 << " mm die ..."
-                  << std::endl;
-        dem::Bed     bed   = dem::fill_die(study.deposition);
-        const double rho_0 = bed.relative_density();
-        std::cout << "  initial in-die relative density " << rho_0 << std::endl;
-        if (study.final_density <= rho_0)
-          reject_entry("Protocol/Final relative density",
-                       format_number(study.final_density),
-                       "must exceed the packing's relative density "
-                         + format_number(rho_0));
-        study.protocol.compaction_targets
-          = dem::density_targets(rho_0,
-                                 study.final_density,
-                                 study.compaction_steps);
+        DieStudy   study        = get_die_study(prm);
+        const auto started      = std::chrono::steady_clock::now();
+        int        rerun_branch = 0;
+        dem::Bed   bed;
+        if (!study.rerun_branch_from.empty())
+          {
+            bed = load_branch_checkpoint(study.rerun_branch_from,
+                                         study.model,
+                                         rerun_branch);
+            std::cout << "Rerunning unloading branch " << rerun_branch
+                      << " from " << study.rerun_branch_from
+                      << " (in-die relative density " << bed.relative_density()
+                      << ")" << std::endl;
+          }
+        else
+          {
+            std::cout << "Packing " << study.deposition.n_particles
+                      << " particles by ballistic deposition in a "
+                      << study.deposition.die_diameter * 1e3 << " mm die ..."
+                      << std::endl;
+            bed                = dem::fill_die(study.deposition);
+            const double rho_0 = bed.relative_density();
+            std::cout << "  initial in-die relative density " << rho_0
+                      << std::endl;
+            if (study.final_density <= rho_0)
+              reject_entry("Protocol/Final relative density",
+                           format_number(study.final_density),
+                           "must exceed the packing's relative density "
+                             + format_number(rho_0));
+            study.protocol.compaction_targets
+              = dem::density_targets(rho_0,
+                                     study.final_density,
+                                     study.compaction_steps);
+          }
 
         std::ofstream      csv(folder / "die.csv");
         dem::DieCompaction die(std::move(bed),
@@ -192,7 +235,10 @@ namespace compax::cli
         int code = success;
         try
           {
-            die.run();
+            if (rerun_branch > 0)
+              die.rerun_branch(rerun_branch);
+            else
+              die.run();
           }
         catch (const std::runtime_error &e)
           {

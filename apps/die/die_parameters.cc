@@ -4,6 +4,7 @@
 #include "apps/common/material_parameters.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <sstream>
 
 namespace compax::cli
@@ -137,6 +138,15 @@ namespace compax::cli
                      "-",
                      "Die-radius increase per ejection step, as a fraction "
                      "of the die radius.");
+    prm.declare_entry("Rerun branch from",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "Path of a branch checkpoint written by an earlier run "
+                      "(OUTDIR/checkpoints/branch-<k>.h5): skip packing and "
+                      "compaction and rerun that unloading branch (unloading "
+                      "and ejection) from the saved state, with this file's "
+                      "other protocol and solver settings. Empty: run the "
+                      "whole study.");
     prm.declare_entry("Maximum ejection steps",
                       "40",
                       dealii::Patterns::Integer(1, 100000),
@@ -219,8 +229,9 @@ namespace compax::cli
     const double     final_density = prm.get_double("Final relative density");
     const int        steps         = prm.get_integer("Compaction steps");
     protocol.unloading_points      = get_real_list(prm, "Unloading points");
+    const std::string rerun        = prm.get("Rerun branch from");
     for (const double u : protocol.unloading_points)
-      if (u <= 0.0 || u > final_density)
+      if (rerun.empty() && (u <= 0.0 || u > final_density))
         reject_entry("Protocol/Unloading points",
                      format_number(u),
                      "each unloading point must lie in (0, Final relative "
@@ -232,6 +243,10 @@ namespace compax::cli
       = prm.get_double("Die-wall friction coefficient");
     protocol.ejection_step      = prm.get_double("Ejection step");
     protocol.max_ejection_steps = prm.get_integer("Maximum ejection steps");
+    if (!rerun.empty() && !std::filesystem::is_regular_file(rerun))
+      reject_entry("Protocol/Rerun branch from",
+                   rerun,
+                   "no such checkpoint file");
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
@@ -241,6 +256,7 @@ namespace compax::cli
     equilibrium.max_iterations  = prm.get_integer("Maximum iterations");
     prm.leave_subsection();
 
-    return {deposition, model, protocol, equilibrium, final_density, steps};
+    return {
+      deposition, model, protocol, equilibrium, final_density, steps, rerun};
   }
 } // namespace compax::cli

@@ -19,6 +19,9 @@ namespace compax::cli
     double final_density;
     /// Number of equal density steps from the packing to final_density.
     int compaction_steps;
+    /// A branch checkpoint (checkpoints/branch-<k>.h5) to rerun that
+    /// unloading branch from, instead of the whole study; empty: none.
+    std::string rerun_branch_from;
   };
 
   /// Declares the subsections Material, Bonding, Packing, Protocol, Solver.

@@ -225,6 +225,21 @@ namespace compax::dem
   }
 
   void
+  DieCompaction::rerun_branch(const int branch)
+  {
+    start_time = now();
+    if (csv)
+      write_csv_header(*csv);
+    failure_message.clear();
+    const LoadStepResult r = stepper.equilibrate(path);
+    check(r, "re-equilibrating the saved compaction state");
+    DieRecord d      = record(path, "compaction", 0, 0, r);
+    d.rho_max_in_die = d.relative_density;
+    emit(d, path);
+    unloading_branch(branch);
+  }
+
+  void
   DieCompaction::consolidate()
   {
     const auto &targets = protocol.compaction_targets;

@@ -136,6 +136,16 @@ namespace compax::dem
     void
     run();
 
+    /**
+     * Reruns one unloading branch (unloading and ejection) from the bed this
+     * object was built with, a saved compaction state such as a
+     * checkpoint: the state is re-equilibrated (it was converged when
+     * saved, so nothing moves beyond the tolerance), recorded, then
+     * unloaded and ejected exactly as run() does at that unloading point.
+     */
+    void
+    rerun_branch(int branch);
+
     /// Whether run() stopped at a load step that did not converge.
     bool
     failed() const

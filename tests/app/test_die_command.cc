@@ -130,3 +130,30 @@ TEST_F(DieCommand, NonConvergenceStopsCleanlyWithTheLastGoodState)
               die.column.at("relative_density").back(),
               1e-9);
 }
+
+TEST_F(DieCommand, BranchRerunFromItsCheckpointEqualsTheUninterruptedBranch)
+{
+  write("small.prm", small_bed);
+  ASSERT_EQ(compax("die small.prm -o full").exit_code, 0);
+  write("rerun.prm",
+        "subsection Packing\n set Number of particles = 150\n"
+        " set Die diameter = 3e-3\nend\n"
+        "subsection Protocol\n"
+        " set Rerun branch from = full/checkpoints/branch-2.h5\nend\n");
+  const auto r = compax("die rerun.prm -o rerun");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Csv full(folder / "full" / "branches.csv");
+  const Csv rerun(folder / "rerun" / "branches.csv");
+  ASSERT_EQ(full.rows(), 2u);
+  ASSERT_EQ(rerun.rows(), 1u);
+  EXPECT_EQ(rerun.column.at("branch")[0], 2);
+  for (const char *quantity : {"rho_max_in_die",
+                               "rho_min_in_die",
+                               "residual_radial_pressure",
+                               "ejection_pressure",
+                               "bonding_surface_unloaded"})
+    EXPECT_NEAR(rerun.column.at(quantity)[0],
+                full.column.at(quantity)[1],
+                1e-9 * std::abs(full.column.at(quantity)[1]))
+      << quantity;
+}
