@@ -119,6 +119,24 @@ namespace compax::fem
     colour_boundaries(tria, geometry);
   }
 
+  namespace
+  {
+    /// The die wall of a 3-D compact follows the cylinder about the z axis
+    /// when the mesh is refined.
+    void
+    attach_die_wall_manifold(dealii::Triangulation<3> &tria)
+    {
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == die_wall)
+            face->set_all_manifold_ids(die_wall_manifold);
+      tria.set_manifold(
+        die_wall_manifold,
+        dealii::CylindricalManifold<3>(dealii::Tensor<1, 3>({0.0, 0.0, 1.0}),
+                                       dealii::Point<3>(0.0, 0.0, 0.0)));
+    }
+  } // namespace
+
   void
   make_cylindrical_compact(dealii::Triangulation<3> &tria,
                            const TabletGeometry     &geometry,
@@ -146,14 +164,7 @@ namespace compax::fem
     tria.reset_all_manifolds();
     tria.set_all_manifold_ids(dealii::numbers::flat_manifold_id);
     colour_boundaries(tria, geometry);
-    for (const auto &cell : tria.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && face->boundary_id() == die_wall)
-          face->set_all_manifold_ids(die_wall_manifold);
-    tria.set_manifold(
-      die_wall_manifold,
-      dealii::CylindricalManifold<3>(dealii::Tensor<1, 3>({0.0, 0.0, 1.0}),
-                                     dealii::Point<3>(0.0, 0.0, 0.0)));
+    attach_die_wall_manifold(tria);
     tria.refine_global(n_global_refinements);
   }
 
@@ -179,14 +190,7 @@ namespace compax::fem
     tria.reset_all_manifolds();
     tria.set_all_manifold_ids(dealii::numbers::flat_manifold_id);
     colour_boundaries(tria, geometry, /*quarter=*/true);
-    for (const auto &cell : tria.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && face->boundary_id() == die_wall)
-          face->set_all_manifold_ids(die_wall_manifold);
-    tria.set_manifold(
-      die_wall_manifold,
-      dealii::CylindricalManifold<3>(dealii::Tensor<1, 3>({0.0, 0.0, 1.0}),
-                                     dealii::Point<3>(0.0, 0.0, 0.0)));
+    attach_die_wall_manifold(tria);
     tria.refine_global(n_global_refinements);
   }
 } // namespace compax::fem

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -79,6 +80,17 @@ namespace compax::testing
       std::ostringstream text;
       text << in.rdbuf();
       return text.str();
+    }
+
+    /// Bad input: exit code 2, one stderr line that contains `expected`, and
+    /// nothing in the test folder but the parameter file `bad.prm`.
+    void
+    expect_rejected(const RunResult &r, const std::string &expected) const
+    {
+      EXPECT_EQ(r.exit_code, 2);
+      EXPECT_NE(r.err.find(expected), std::string::npos) << "stderr: " << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_EQ(entries(), std::vector<std::string>{"bad.prm"});
     }
 
     /// Names in the test folder (for "no half-written output" checks).
