@@ -1,25 +1,11 @@
 #include "dem/solver/contact_assembler.h"
 
+#include "dem/solver/pair_block.h"
+
 #include <cmath>
 
 namespace compax::dem
 {
-  namespace
-  {
-    /// block += s * (a n n^T + b I)
-    inline void
-    add_block(double                *blk,
-              const double           s,
-              const double           a,
-              const double           b,
-              const Eigen::Vector3d &n)
-    {
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-          blk[3 * r + c] += s * (a * n[r] * n[c] + (r == c ? b : 0.0));
-    }
-  } // namespace
-
   ContactResponse
   contact_response(const BondedElastoplasticLaw &law,
                    const double                  gamma,
@@ -167,13 +153,11 @@ namespace compax::dem
           }
         if constexpr (with_stiffness)
           {
-            // k = P' n n^T - P/d (I - n n^T) = (P' + P/d) n n^T - P/d I
-            const double a = r.stiffness + r.force / dist;
-            const double b = -r.force / dist;
-            add_block(K->block(K->diagonal_slot(c.i)), 1.0, a, b, n);
-            add_block(K->block(K->diagonal_slot(c.j)), 1.0, a, b, n);
-            add_block(K->block(pair_slots[2 * k]), -1.0, a, b, n);
-            add_block(K->block(pair_slots[2 * k + 1]), -1.0, a, b, n);
+            const PairBlock blk(r, dist);
+            blk.add_to(K->block(K->diagonal_slot(c.i)), 1.0, n);
+            blk.add_to(K->block(K->diagonal_slot(c.j)), 1.0, n);
+            blk.add_to(K->block(pair_slots[2 * k]), -1.0, n);
+            blk.add_to(K->block(pair_slots[2 * k + 1]), -1.0, n);
           }
       }
 
@@ -196,7 +180,10 @@ namespace compax::dem
         if constexpr (with_stiffness)
           {
             double *blk = K->block(K->diagonal_slot(c.i));
-            add_block(blk, 1.0, r.stiffness, 0.0, g.normal);
+            for (int row = 0; row < 3; ++row)
+              for (int col = 0; col < 3; ++col)
+                blk[3 * row + col]
+                  += r.stiffness * g.normal[row] * g.normal[col];
             if (c.wall == Wall::die && g.axis_distance > 0.0)
               {
                 // d(-P e_r)/dx with e_r turning: +P/r (I_xy - e_r e_r^T)

@@ -2,6 +2,7 @@
 
 #include "dem/solver/bed.h"
 #include "dem/solver/block_sparse_matrix.h"
+#include "dem/solver/contact_sums.h"
 
 #include <Eigen/Core>
 
@@ -22,18 +23,6 @@ namespace compax::dem
   contact_response(const BondedElastoplasticLaw &law,
                    double                        gamma,
                    const ContactHistory         &history);
-
-  /// Force sums gathered while assembling.
-  struct ContactSums
-  {
-    /// Sum of the normal forces P on each wall [N] (positive compressive):
-    /// index Wall::lower_punch, upper_punch, die.
-    double wall_force[n_walls] = {0.0, 0.0, 0.0};
-    /// Mean |P| over contacts carrying a non-zero force [N].
-    double mean_force = 0.0;
-    /// Number of contacts (pairs and walls) with non-zero force.
-    std::size_t n_loaded = 0;
-  };
 
   /**
    * Residual and stiffness of the static equilibrium of Gonzalez 2018,

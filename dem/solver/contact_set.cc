@@ -6,23 +6,26 @@
 
 namespace compax::dem
 {
-  namespace
+  void
+  update_history(const BondedElastoplasticLaw &law,
+                 const double                  gamma,
+                 ContactHistory               &history,
+                 BondChanges                  &changes)
   {
-    bool
-    has_history(const ContactHistory &h)
-    {
-      return h.a_p > 0.0 || h.a_B > 0.0;
-    }
+    const ContactHistory next = law.updated_history(gamma, history);
+    if (history.a_B == 0.0 && next.a_B > 0.0)
+      ++changes.formed;
+    else if (history.a_B > 0.0 && next.a_B == 0.0)
+      ++changes.broken;
+    history = next;
+  }
 
-    /// Revisions are unique across all contact sets, so that a restored
-    /// copy never aliases a newer list.
-    std::uint64_t
-    next_revision()
-    {
-      static std::atomic<std::uint64_t> counter{0};
-      return ++counter;
-    }
-  } // namespace
+  std::uint64_t
+  next_contact_list_revision()
+  {
+    static std::atomic<std::uint64_t> counter{0};
+    return ++counter;
+  }
 
   ContactSet::ContactSet(const double skin)
       : skin_(skin)
@@ -141,7 +144,7 @@ namespace compax::dem
     for (int w = 0; w < n_walls; ++w)
       reference_walls[w] = die.coordinate(static_cast<Wall>(w));
     built     = true;
-    revision_ = next_revision();
+    revision_ = next_contact_list_revision();
   }
 
   BondChanges
@@ -149,21 +152,14 @@ namespace compax::dem
                                const DieWalls       &die)
   {
     BondChanges changes;
-    auto        apply = [&](const auto &law, ContactHistory &h, double gamma) {
-      const ContactHistory next = law.updated_history(gamma, h);
-      if (h.a_B == 0.0 && next.a_B > 0.0)
-        ++changes.formed;
-      else if (h.a_B > 0.0 && next.a_B == 0.0)
-        ++changes.broken;
-      h = next;
-    };
     for (PairContact &c : pairs)
-      apply(c.law, c.history, pair_overlap(particles, c));
+      update_history(c.law, pair_overlap(particles, c), c.history, changes);
     for (WallContact &c : walls)
-      apply(c.law,
-            c.history,
-            die.gap(c.wall, particles.positions[c.i], particles.radii[c.i])
-              .overlap);
+      update_history(
+        c.law,
+        die.gap(c.wall, particles.positions[c.i], particles.radii[c.i]).overlap,
+        c.history,
+        changes);
     return changes;
   }
 } // namespace compax::dem

@@ -104,6 +104,26 @@ namespace compax::dem
     double                       reference_walls[n_walls] = {0.0, 0.0, 0.0};
   };
 
+  /// Whether a contact keeps internal variables (plastic radius or bond).
+  inline bool
+  has_history(const ContactHistory &h)
+  {
+    return h.a_p > 0.0 || h.a_B > 0.0;
+  }
+
+  /// Applies Eq. (13) to one contact at overlap gamma and counts the bond
+  /// it forms or breaks.
+  void
+  update_history(const BondedElastoplasticLaw &law,
+                 double                        gamma,
+                 ContactHistory               &history,
+                 BondChanges                  &changes);
+
+  /// A new revision number for a rebuilt contact list, unique across all
+  /// lists, so that a restored copy never aliases a newer list.
+  std::uint64_t
+  next_contact_list_revision();
+
   /// Overlap gamma = R_i + R_j - |x_i - x_j| of a pair contact [m].
   inline double
   pair_overlap(const ParticleSystem &p, const PairContact &c)

@@ -1,5 +1,7 @@
 #include "dem/solver/fire_relaxation.h"
 
+#include "dem/solver/die_bed_system.h"
+
 #include "dem/solver/trust_region_newton.h"
 
 #include <algorithm>
@@ -8,10 +10,10 @@
 namespace compax::dem
 {
   void
-  FireRelaxation::update_masses(Bed &bed, const ContactModel &model)
+  FireRelaxation::update_masses(EquilibriumSystem &system)
   {
-    sums                   = assembler.assemble(bed, model, F, K);
-    const std::size_t n    = bed.particles.size();
+    sums                   = system.assemble(F, K);
+    const std::size_t n    = system.n_particles();
     double            mean = 0.0;
     for (std::size_t i = 0; i < n; ++i)
       {
@@ -36,6 +38,16 @@ namespace compax::dem
                         const int           max_iterations,
                         const double        force_floor)
   {
+    DieBedSystem system(bed, model, assembler);
+    return relax(system, target, max_iterations, force_floor);
+  }
+
+  FireResult
+  FireRelaxation::relax(EquilibriumSystem &system,
+                        const double       target,
+                        const int          max_iterations,
+                        const double       force_floor)
+  {
     // FIRE (Bitzek et al. 2006) in units where a particle's own stiffness
     // over its mass is 1. (The FIRE 2.0 variant, with dt_max = 1 and the
     // half-step correction, converged more slowly to tight tolerances on
@@ -43,17 +55,17 @@ namespace compax::dem
     const double dt_max = 0.5, alpha0 = 0.1, f_inc = 1.1, f_alpha = 0.99;
     const int    n_min = 5, mass_interval = 25;
 
-    const std::size_t n = bed.particles.size();
+    const std::size_t n = system.n_particles();
     v.setZero(3 * n);
     inverse_mass.resize(3 * n);
-    const double cap = 0.1 * bed.contacts.skin();
+    const double cap = 0.1 * system.skin();
 
     FireResult result;
     double     dt = 0.1, alpha = alpha0;
     int        n_positive = 0;
-    update_masses(bed, model);
+    update_masses(system);
     ++result.assemblies;
-    auto x = bed.particles.coordinates();
+    auto x = system.coordinates();
     for (int it = 0;; ++it)
       {
         const double fmax = max_particle_norm(F);
@@ -97,11 +109,11 @@ namespace compax::dem
         x += dt * v;
         if (it % mass_interval == mass_interval - 1)
           {
-            update_masses(bed, model);
+            update_masses(system);
             ++result.assemblies;
           }
         else
-          sums = assembler.residual(bed, model, F);
+          sums = system.residual(F);
       }
     result.sums = sums;
     return result;

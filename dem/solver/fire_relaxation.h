@@ -3,6 +3,7 @@
 #include "dem/solver/bed.h"
 #include "dem/solver/block_sparse_matrix.h"
 #include "dem/solver/contact_assembler.h"
+#include "dem/solver/equilibrium_system.h"
 
 #include <Eigen/Core>
 
@@ -44,6 +45,13 @@ namespace compax::dem
      * in absolute terms), or max_iterations.
      */
     FireResult
+    relax(EquilibriumSystem &system,
+          double             target_relative_residual,
+          int                max_iterations,
+          double             force_floor = 0.0);
+
+    /// The same for a die bed.
+    FireResult
     relax(Bed                &bed,
           const ContactModel &model,
           double              target_relative_residual,
@@ -52,7 +60,7 @@ namespace compax::dem
 
   private:
     void
-    update_masses(Bed &bed, const ContactModel &model);
+    update_masses(EquilibriumSystem &system);
 
     ContactAssembler  assembler;
     BlockSparseMatrix K;

@@ -1,5 +1,7 @@
 #include "dem/solver/trust_region_newton.h"
 
+#include "dem/solver/die_bed_system.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -34,63 +36,15 @@ namespace compax::dem
   }
 
   bool
-  TrustRegionNewton::limit_to_gaps(const Bed &bed)
+  TrustRegionNewton::limit_to_gaps(const EquilibriumSystem &system)
   {
-    const ParticleSystem &p = bed.particles;
-    const std::size_t     n = p.size();
+    const std::size_t n = system.n_particles();
     factor.setOnes(n);
-    // Overlap a closing contact may reach within one step: the mean overlap
-    // of the loaded contacts (the force scale the model already knows).
-    double      sum_overlap = 0.0;
-    std::size_t loaded      = 0;
-    for (const PairContact &c : bed.contacts.pairs)
-      {
-        const double gamma = pair_overlap(p, c);
-        if (gamma > 0.0)
-          {
-            sum_overlap += gamma;
-            ++loaded;
-          }
-      }
-    const double allowance
-      = loaded > 0 ? sum_overlap / loaded : 1e-3 * p.mean_radius();
-    bool clipped = false;
-    auto limit   = [&](std::uint32_t i, double gap, double closing) {
-      if (closing > gap + allowance)
-        {
-          factor[i] = std::min(factor[i], (gap + allowance) / closing);
-          clipped   = true;
-        }
-    };
-    for (const PairContact &c : bed.contacts.pairs)
-      {
-        // Only contacts the quadratic model does not see: virgin and apart.
-        if (c.history.a_p > 0.0)
-          continue;
-        const Eigen::Vector3d d     = p.positions[c.i] - p.positions[c.j];
-        const double          dist  = d.norm();
-        const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
-        if (gamma > 0.0)
-          continue;
-        const double closing
-          = -(s.segment<3>(3 * c.i) - s.segment<3>(3 * c.j)).dot(d) / dist;
-        // Both particles share the closing distance.
-        limit(c.i, -gamma, closing);
-        limit(c.j, -gamma, closing);
-      }
-    for (const WallContact &c : bed.contacts.walls)
-      {
-        if (c.history.a_p > 0.0)
-          continue;
-        const WallGap g = bed.walls.gap(c.wall, p.positions[c.i], p.radii[c.i]);
-        if (g.overlap > 0.0)
-          continue;
-        limit(c.i, -g.overlap, -s.segment<3>(3 * c.i).dot(g.normal));
-      }
+    bool clipped = system.limit_closing(s, factor);
     // No particle moves farther than a quarter of the Verlet skin (the
     // contact list stays valid); capping the few that would, instead of
     // shrinking the trust region of the whole bed, keeps the others' steps.
-    const double cap = 0.25 * bed.contacts.skin();
+    const double cap = 0.25 * system.skin();
     for (std::size_t i = 0; i < n; ++i)
       {
         const double len = s.segment<3>(3 * i).norm();
@@ -109,12 +63,19 @@ namespace compax::dem
   EquilibriumResult
   TrustRegionNewton::solve(Bed &bed, const ContactModel &model)
   {
+    DieBedSystem system(bed, model, assembler);
+    return solve(system);
+  }
+
+  EquilibriumResult
+  TrustRegionNewton::solve(EquilibriumSystem &system)
+  {
     EquilibriumResult result;
-    const double      R_mean = bed.particles.mean_radius();
+    const double      R_mean = system.mean_radius();
     // The trust region bounds the M-norm of the whole step, so that a
     // radius of r R sqrt(N) lets every particle move by about r R.
     const double length
-      = R_mean * std::sqrt(static_cast<double>(bed.particles.size()));
+      = R_mean * std::sqrt(static_cast<double>(system.n_particles()));
     const double max_radius = opts.max_radius * length;
     if (radius <= 0.0)
       radius = opts.initial_radius * length;
@@ -123,7 +84,7 @@ namespace compax::dem
 
     auto assemble = [&]() {
       const auto t0 = clock_type::now();
-      result.sums   = assembler.assemble(bed, model, F, K);
+      result.sums   = system.assemble(F, K);
       result.assembly_seconds += seconds_since(t0);
       ++result.assemblies;
     };
@@ -152,10 +113,8 @@ namespace compax::dem
           {
             // Newton crawls: the bed is rearranging. Relax with FIRE.
             const auto       tf = clock_type::now();
-            const FireResult fr = fire.relax(bed,
-                                             model,
-                                             opts.fire_tolerance,
-                                             opts.fire_iterations);
+            const FireResult fr
+              = fire.relax(system, opts.fire_tolerance, opts.fire_iterations);
             result.fire_seconds += seconds_since(tf);
             result.fire_iterations += fr.iterations;
             assemble();
@@ -189,7 +148,7 @@ namespace compax::dem
         ++result.iterations;
         double pred = sub.predicted_decrease, step_norm = sub.step_norm;
         s_full = s;
-        if (opts.limit_to_gaps && limit_to_gaps(bed))
+        if (opts.limit_to_gaps && limit_to_gaps(system))
           {
             // The clipped step's own model decrease and length; if clipping
             // single particles lost the model decrease, shorten the whole
@@ -210,9 +169,9 @@ namespace compax::dem
         // No particle may move more than half the Verlet skin in one step
         // (it could pass through a wall or a neighbour): shrink and retry.
         const double longest = max_particle_norm(s);
-        if (longest > 0.5 * bed.contacts.skin())
+        if (longest > 0.5 * system.skin())
           {
-            radius = step_norm * 0.25 * bed.contacts.skin() / longest;
+            radius = step_norm * 0.25 * system.skin() / longest;
             continue;
           }
         if (!(pred > 0.0))
@@ -224,7 +183,7 @@ namespace compax::dem
           }
 
         // Trial point.
-        auto x = bed.particles.coordinates();
+        auto x = system.coordinates();
         x_old  = x;
         F_old  = F;
         x += s;

@@ -3,6 +3,7 @@
 #include "dem/solver/bed.h"
 #include "dem/solver/block_sparse_matrix.h"
 #include "dem/solver/contact_assembler.h"
+#include "dem/solver/equilibrium_system.h"
 #include "dem/solver/fire_relaxation.h"
 #include "dem/solver/steihaug_cg.h"
 
@@ -104,6 +105,10 @@ namespace compax::dem
     EquilibriumResult
     solve(Bed &bed, const ContactModel &model);
 
+    /// Moves the particles of any system to equilibrium.
+    EquilibriumResult
+    solve(EquilibriumSystem &system);
+
     const EquilibriumOptions &
     options() const
     {
@@ -121,7 +126,7 @@ namespace compax::dem
     /// Applies EquilibriumOptions::limit_to_gaps to the step s; returns
     /// whether it changed it.
     bool
-    limit_to_gaps(const Bed &bed);
+    limit_to_gaps(const EquilibriumSystem &system);
 
     EquilibriumOptions        opts;
     ContactAssembler          assembler;

@@ -1,0 +1,162 @@
+#include "dem/rve/homogenization.h"
+
+#include "dem/rve/periodic_bed_system.h"
+#include "dem/solver/pair_block.h"
+
+#include <Eigen/SparseCholesky>
+
+#include <stdexcept>
+#include <string>
+
+namespace compax::dem
+{
+  namespace
+  {
+    /// Voigt index -> tensor indices, order (xx, yy, zz, yz, xz, xy).
+    constexpr int voigt_row[6] = {0, 1, 2, 1, 0, 0};
+    constexpr int voigt_col[6] = {0, 1, 2, 2, 2, 1};
+
+    /// The unit strain of Voigt direction beta (engineering shear 1).
+    Eigen::Matrix3d
+    unit_strain(const int beta)
+    {
+      Vector6d v = Vector6d::Zero();
+      v[beta]    = 1.0;
+      return strain_from_voigt(v);
+    }
+  } // namespace
+
+  Vector6d
+  to_voigt(const Eigen::Matrix3d &t)
+  {
+    Vector6d v;
+    for (int b = 0; b < 6; ++b)
+      v[b]
+        = 0.5 * (t(voigt_row[b], voigt_col[b]) + t(voigt_col[b], voigt_row[b]));
+    return v;
+  }
+
+  Eigen::Matrix3d
+  strain_from_voigt(const Vector6d &v)
+  {
+    Eigen::Matrix3d e;
+    e << v[0], 0.5 * v[5], 0.5 * v[4], //
+      0.5 * v[5], v[1], 0.5 * v[3],    //
+      0.5 * v[4], 0.5 * v[3], v[2];
+    return e;
+  }
+
+  Eigen::Matrix3d
+  love_weber_stress(const PeriodicBed &bed)
+  {
+    const ParticleSystem &p = bed.particles;
+    Eigen::Matrix3d       S = Eigen::Matrix3d::Zero();
+    for (const PeriodicContact &c : bed.contacts.pairs)
+      {
+        const Eigen::Vector3d d     = branch_vector(p, bed.cell, c);
+        const double          dist  = d.norm();
+        const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
+        if (c.history.a_p == 0.0 && gamma <= 0.0)
+          continue;
+        const double force
+          = periodic_contact_response(c, gamma, ContactBranch::current).force;
+        if (force != 0.0)
+          S.noalias() -= (force / dist) * d * d.transpose();
+      }
+    return S / bed.cell.volume();
+  }
+
+  CellTangents
+  TangentCalculator::compute(PeriodicBed        &bed,
+                             const ContactModel &model,
+                             const ContactBranch branch)
+  {
+    const ParticleSystem &p = bed.particles;
+    const std::size_t     n = p.size();
+    assembler.assemble(bed, model, F, K, branch);
+
+    // A (affine derivative of S = sum_c g (x) d) and G (out-of-balance
+    // forces of the affine motion), column by column.
+    Matrix6d        A = Matrix6d::Zero();
+    Eigen::MatrixXd G = Eigen::MatrixXd::Zero(3 * n, 6);
+    Eigen::Matrix3d E[6];
+    for (int b = 0; b < 6; ++b)
+      E[b] = unit_strain(b);
+    for (const PeriodicContact &c : bed.contacts.pairs)
+      {
+        const Eigen::Vector3d d     = branch_vector(p, bed.cell, c);
+        const double          dist  = d.norm();
+        const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
+        if (c.history.a_p == 0.0 && gamma <= 0.0)
+          continue;
+        const ContactResponse r = periodic_contact_response(c, gamma, branch);
+        if (r.force == 0.0 && r.stiffness == 0.0)
+          continue;
+        const Eigen::Vector3d n = d / dist;
+        const Eigen::Matrix3d k = PairBlock(r, dist).matrix(n);
+        const Eigen::Vector3d g = -r.force * n;
+        for (int b = 0; b < 6; ++b)
+          {
+            const Eigen::Vector3d dd = E[b] * d;
+            const Eigen::Vector3d kd = k * dd;
+            A.col(b) += to_voigt(kd * d.transpose() + g * dd.transpose());
+            G.block<3, 1>(3 * c.i, b) += kd;
+            G.block<3, 1>(3 * c.j, b) -= kd;
+          }
+      }
+
+    // K^{-1} G by sparse LDL^T of K shifted off its null space.
+    Eigen::SparseMatrix<double> Ks            = K.to_sparse();
+    double                      mean_diagonal = 0.0;
+    for (Eigen::Index i = 0; i < Ks.rows(); ++i)
+      mean_diagonal += std::abs(Ks.coeff(i, i));
+    mean_diagonal = Ks.rows() > 0 ? mean_diagonal / Ks.rows() : 1.0;
+    if (!(mean_diagonal > 0.0))
+      mean_diagonal = 1.0;
+    for (Eigen::Index i = 0; i < Ks.rows(); ++i)
+      Ks.coeffRef(i, i) += 1e-10 * mean_diagonal;
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(Ks);
+    if (ldlt.info() != Eigen::Success)
+      throw std::runtime_error("RVE tangent: factorization of K failed");
+    const Eigen::MatrixXd X = ldlt.solve(G);
+
+    const double   V     = bed.cell.volume();
+    const Vector6d sigma = to_voigt(love_weber_stress(bed));
+    Vector6d       trace = Vector6d::Zero();
+    trace.head<3>().setOnes();
+    CellTangents t;
+    t.affine    = A / V - sigma * trace.transpose();
+    t.condensed = (A - G.transpose() * X) / V - sigma * trace.transpose();
+    return t;
+  }
+
+  Matrix6d
+  finite_difference_tangent(const PeriodicBed        &bed,
+                            const ContactModel       &model,
+                            const double              h,
+                            const EquilibriumOptions &options)
+  {
+    PeriodicAssembler assembler;
+    TrustRegionNewton newton(options);
+    auto              stress_at = [&](const Eigen::Matrix3d &strain) {
+      PeriodicBed strained = bed;
+      map_affinely(strained,
+                   (Eigen::Matrix3d::Identity() + strain) * bed.deformation);
+      PeriodicBedSystem       system(strained, model, assembler);
+      const EquilibriumResult r = newton.solve(system);
+      if (!r.converged)
+        throw std::runtime_error(
+          "finite-difference tangent: equilibrium did not converge (residual "
+          + std::to_string(r.relative_residual * 1e12) + "e-12" + " after "
+          + std::to_string(r.iterations) + " iterations)");
+      return to_voigt(love_weber_stress(strained));
+    };
+    Matrix6d C;
+    for (int b = 0; b < 6; ++b)
+      {
+        const Eigen::Matrix3d E = unit_strain(b);
+        C.col(b) = (stress_at(h * E) - stress_at(-h * E)) / (2.0 * h);
+      }
+    return C;
+  }
+} // namespace compax::dem

@@ -1,0 +1,129 @@
+#include "dem/rve/periodic_assembler.h"
+
+#include "dem/solver/contact_assembler.h"
+#include "dem/solver/pair_block.h"
+
+#include <cmath>
+
+namespace compax::dem
+{
+
+  ContactResponse
+  periodic_contact_response(const PeriodicContact &c,
+                            const double           gamma,
+                            const ContactBranch    branch)
+  {
+    ContactResponse r = contact_response(c.law, gamma, c.history);
+    if (branch == ContactBranch::unloading && r.contact_radius > 0.0
+        && r.contact_radius >= c.history.a_p)
+      {
+        constexpr double pi = 3.14159265358979323846;
+        r.stiffness         = 16.0 * c.law.constants().effective_modulus
+                      * r.contact_radius / (3.0 * pi);
+      }
+    return r;
+  }
+
+  void
+  PeriodicAssembler::refresh_pattern(const PeriodicBed &bed,
+                                     BlockSparseMatrix &K)
+  {
+    if (pattern_revision == bed.contacts.revision()
+        && pattern_size == bed.particles.size() && pattern_matrix == &K)
+      return;
+    const auto &pairs = bed.contacts.pairs;
+    scratch_pairs.clear();
+    scratch_pairs.reserve(pairs.size());
+    for (const PeriodicContact &c : pairs)
+      scratch_pairs.emplace_back(c.i, c.j);
+    K.reinit(bed.particles.size(), scratch_pairs);
+    pair_slots.resize(2 * pairs.size());
+    for (std::size_t k = 0; k < pairs.size(); ++k)
+      {
+        pair_slots[2 * k]     = K.slot(pairs[k].i, pairs[k].j);
+        pair_slots[2 * k + 1] = K.slot(pairs[k].j, pairs[k].i);
+      }
+    pattern_revision = bed.contacts.revision();
+    pattern_size     = bed.particles.size();
+    pattern_matrix   = &K;
+  }
+
+  ContactSums
+  PeriodicAssembler::residual(PeriodicBed        &bed,
+                              const ContactModel &model,
+                              Eigen::VectorXd    &F)
+  {
+    bed.contacts.update(bed.particles, bed.cell, model);
+    return evaluate<false>(bed, F, nullptr, ContactBranch::current);
+  }
+
+  ContactSums
+  PeriodicAssembler::assemble(PeriodicBed        &bed,
+                              const ContactModel &model,
+                              Eigen::VectorXd    &F,
+                              BlockSparseMatrix  &K,
+                              const ContactBranch branch)
+  {
+    bed.contacts.update(bed.particles, bed.cell, model);
+    refresh_pattern(bed, K);
+    K.set_zero();
+    return evaluate<true>(bed, F, &K, branch);
+  }
+
+  template <bool with_stiffness>
+  ContactSums
+  PeriodicAssembler::evaluate(const PeriodicBed  &bed,
+                              Eigen::VectorXd    &F,
+                              BlockSparseMatrix  *K,
+                              const ContactBranch branch)
+  {
+    const ParticleSystem &p = bed.particles;
+    F.setZero(3 * p.size());
+    ContactSums sums;
+    double      sum_abs = 0.0;
+    const auto &pairs   = bed.contacts.pairs;
+    for (std::size_t k = 0; k < pairs.size(); ++k)
+      {
+        const PeriodicContact &c     = pairs[k];
+        const Eigen::Vector3d  d     = branch_vector(p, bed.cell, c);
+        const double           dist  = d.norm();
+        const double           gamma = p.radii[c.i] + p.radii[c.j] - dist;
+        if (c.history.a_p == 0.0 && gamma <= 0.0)
+          continue; // virgin and apart (most candidates of the list)
+        const ContactResponse r = periodic_contact_response(c, gamma, branch);
+        if (r.force == 0.0 && r.stiffness == 0.0)
+          continue;
+        const Eigen::Vector3d n = d / dist;
+        F.template segment<3>(3 * c.i) -= r.force * n;
+        F.template segment<3>(3 * c.j) += r.force * n;
+        if (r.force != 0.0)
+          {
+            ++sums.n_loaded;
+            sum_abs += std::abs(r.force);
+          }
+        if constexpr (with_stiffness)
+          {
+            const PairBlock blk(r, dist);
+            blk.add_to(K->block(K->diagonal_slot(c.i)), 1.0, n);
+            blk.add_to(K->block(K->diagonal_slot(c.j)), 1.0, n);
+            blk.add_to(K->block(pair_slots[2 * k]), -1.0, n);
+            blk.add_to(K->block(pair_slots[2 * k + 1]), -1.0, n);
+          }
+      }
+    if (sums.n_loaded > 0)
+      sums.mean_force = sum_abs / sums.n_loaded;
+    return sums;
+  }
+
+  template ContactSums
+  PeriodicAssembler::evaluate<true>(const PeriodicBed &,
+                                    Eigen::VectorXd &,
+                                    BlockSparseMatrix *,
+                                    ContactBranch);
+  template ContactSums
+  PeriodicAssembler::evaluate<false>(const PeriodicBed &,
+                                     Eigen::VectorXd &,
+                                     BlockSparseMatrix *,
+                                     ContactBranch);
+
+} // namespace compax::dem
