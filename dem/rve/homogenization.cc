@@ -5,6 +5,7 @@
 
 #include <Eigen/SparseCholesky>
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -105,7 +106,60 @@ namespace compax::dem
           }
       }
 
-    // K^{-1} G by sparse LDL^T of K shifted off its null space.
+    CellTangents    t;
+    Eigen::MatrixXd X(3 * n, 6);
+    if (method == Method::direct || !solve_iteratively(G, X, t.cg_iterations))
+      {
+        solve_directly(G, X);
+        t.direct = true;
+      }
+
+    const double   V     = bed.cell.volume();
+    const Vector6d sigma = to_voigt(love_weber_stress(bed));
+    Vector6d       trace = Vector6d::Zero();
+    trace.head<3>().setOnes();
+    t.affine    = A / V - sigma * trace.transpose();
+    t.condensed = (A - G.transpose() * X) / V - sigma * trace.transpose();
+    return t;
+  }
+
+  bool
+  TangentCalculator::solve_iteratively(const Eigen::MatrixXd &G,
+                                       Eigen::MatrixXd       &X,
+                                       int                   &iterations)
+  {
+    M.compute(K);
+    const int max_iterations = 10 * static_cast<int>(G.rows()) + 100;
+    for (int b = 0; b < 6; ++b)
+      {
+        g = G.col(b);
+        if (g.squaredNorm() == 0.0)
+          {
+            X.col(b).setZero();
+            continue;
+          }
+        // Steihaug-Toint without a radius is PCG on g.s + s.K s / 2:
+        // s = -K^{-1} g unless it meets negative curvature.
+        const SteihaugResult r
+          = cg.solve(K,
+                     M,
+                     g,
+                     std::numeric_limits<double>::infinity(),
+                     1e-8,
+                     max_iterations,
+                     s);
+        iterations += r.iterations;
+        if (r.negative_curvature || r.iterations >= max_iterations)
+          return false;
+        X.col(b) = -s;
+      }
+    return true;
+  }
+
+  void
+  TangentCalculator::solve_directly(const Eigen::MatrixXd &G,
+                                    Eigen::MatrixXd       &X) const
+  {
     Eigen::SparseMatrix<double> Ks            = K.to_sparse();
     double                      mean_diagonal = 0.0;
     for (Eigen::Index i = 0; i < Ks.rows(); ++i)
@@ -118,16 +172,7 @@ namespace compax::dem
     Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(Ks);
     if (ldlt.info() != Eigen::Success)
       throw std::runtime_error("RVE tangent: factorization of K failed");
-    const Eigen::MatrixXd X = ldlt.solve(G);
-
-    const double   V     = bed.cell.volume();
-    const Vector6d sigma = to_voigt(love_weber_stress(bed));
-    Vector6d       trace = Vector6d::Zero();
-    trace.head<3>().setOnes();
-    CellTangents t;
-    t.affine    = A / V - sigma * trace.transpose();
-    t.condensed = (A - G.transpose() * X) / V - sigma * trace.transpose();
-    return t;
+    X = ldlt.solve(G);
   }
 
   Matrix6d

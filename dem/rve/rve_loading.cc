@@ -53,7 +53,7 @@ namespace compax::dem
                                         opts.fire_tolerance,
                                         opts.fire_iterations,
                                         floor);
-        total.iterations += f.iterations;
+        total.relaxation_iterations += f.iterations;
         total.relative_residual = f.relative_residual;
         if (f.converged)
           return true;

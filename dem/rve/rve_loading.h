@@ -31,12 +31,15 @@ namespace compax::dem
   /// Outcome of one macroscopic step (possibly several sub-steps).
   struct RveStepResult
   {
-    bool        converged     = false;
-    bool        jammed        = true;
-    int         substeps      = 0;
-    int         cutbacks      = 0;
-    int         iterations    = 0;
-    int         cg_iterations = 0;
+    bool converged = false;
+    bool jammed    = true;
+    int  substeps  = 0;
+    int  cutbacks  = 0;
+    /// Newton and conjugate-gradient iterations (jammed sub-steps).
+    int iterations    = 0;
+    int cg_iterations = 0;
+    /// FIRE iterations (unjammed sub-steps).
+    int         relaxation_iterations = 0;
     BondChanges bonds;
     /// max_i |F_i| / mean contact force at the end [-].
     double relative_residual = 0.0;
