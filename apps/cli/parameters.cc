@@ -129,6 +129,26 @@ namespace compax::cli
     prm.declare_entry(name, default_value, pattern, text);
   }
 
+  namespace
+  {
+    std::filesystem::path last_parameter_file_directory;
+  }
+
+  std::filesystem::path
+  parameter_file_directory()
+  {
+    return last_parameter_file_directory;
+  }
+
+  std::filesystem::path
+  resolve_input_path(const std::string &path)
+  {
+    const std::filesystem::path p(path);
+    if (p.empty() || p.is_absolute())
+      return p;
+    return parameter_file_directory() / p;
+  }
+
   void
   parse_parameter_file(dealii::ParameterHandler    &prm,
                        const std::filesystem::path &file)
@@ -136,6 +156,8 @@ namespace compax::cli
     if (!std::filesystem::is_regular_file(file))
       throw InputError("parameter file '" + file.string()
                        + "' does not exist or is not a regular file");
+    last_parameter_file_directory
+      = std::filesystem::absolute(file).parent_path();
     try
       {
         prm.parse_input(file.string(), "", false, false);

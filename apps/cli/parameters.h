@@ -65,6 +65,16 @@ namespace compax::cli
                    const std::string                   &unit,
                    const std::string                   &documentation);
 
+  /// Folder of the parameter file parsed last (absolute), empty before
+  /// any: relative file names inside a .prm are relative to it.
+  std::filesystem::path
+  parameter_file_directory();
+
+  /// A file named in a .prm: absolute as given, relative to the .prm's
+  /// folder otherwise (the current folder when no file was parsed).
+  std::filesystem::path
+  resolve_input_path(const std::string &path);
+
   /**
    * Parses a .prm file into prm. A missing file, an unknown entry, a
    * malformed or out-of-range value all become one InputError whose message
