@@ -1,10 +1,13 @@
 #include "apps/cli/commands.h"
 
+#include "apps/bed/bed_command.h"
 #include "apps/contact/contact_command.h"
 #include "apps/crystal/crystal_command.h"
+#include "apps/database/database_command.h"
 #include "apps/die/die_command.h"
 #include "apps/mcdem/calibrate_command.h"
 #include "apps/mcdem/mcdem_command.h"
+#include "apps/rve/rve_command.h"
 #include "apps/tablet/tablet_command.h"
 
 namespace compax::cli
@@ -19,6 +22,9 @@ namespace compax::cli
     commands.push_back(make_mcdem_command());
     commands.push_back(make_calibrate_command());
     commands.push_back(make_tablet_command());
+    commands.push_back(make_rve_command());
+    commands.push_back(make_database_command());
+    commands.push_back(make_bed_command());
     return commands;
   }
 } // namespace compax::cli

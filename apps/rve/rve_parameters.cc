@@ -1,0 +1,652 @@
+#include "apps/rve/rve_parameters.h"
+
+#include "apps/cli/input_error.h"
+#include "apps/cli/parameters.h"
+#include "apps/common/material_parameters.h"
+#include "dem/periodic/size_distribution_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace compax::cli
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+
+    /// Mean R^3 of the (untruncated) radius distribution [m^3].
+    double
+    mean_cubed_radius(const dem::SizeDistribution &s)
+    {
+      return std::pow(s.median_radius, 3)
+             * std::exp(4.5 * s.log_sigma * s.log_sigma);
+    }
+
+    /// Rejects a particle count whose cell would be narrower than a
+    /// particle plus the Verlet skin at the smallest width along the path
+    /// (the contact search needs 2 R_max + skin, Giannis 2021 Sec. 4.1
+    /// warns that small cells underestimate the stress anyway).
+    void
+    check_cell_width(const std::string &entry,
+                     const std::size_t  n,
+                     const RveStudy    &s)
+    {
+      const auto  &sizes = s.packing.sizes;
+      const double R_max
+        = s.packing.sizes.log_sigma > 0.0
+            ? std::min(sizes.max_radius,
+                       sizes.median_radius * std::exp(3.0 * sizes.log_sigma))
+            : sizes.median_radius;
+      const double skin = s.packing.skin * sizes.median_radius;
+      const double L0 = std::cbrt(n * 4.0 / 3.0 * pi * mean_cubed_radius(sizes)
+                                  / s.packing.relative_density);
+      double       narrowest = L0;
+      if (s.path == RvePath::uniaxial)
+        narrowest = L0 * s.packing.relative_density / s.target_density;
+      else if (s.path == RvePath::hydrostatic)
+        narrowest
+          = L0 * std::cbrt(s.packing.relative_density / s.target_density);
+      const double needed = 2.0 * R_max + skin;
+      if (narrowest < needed)
+        reject_entry(entry,
+                     std::to_string(n),
+                     "too few particles: the cell would be "
+                       + format_number(narrowest)
+                       + " m wide along the path, below the largest diameter "
+                         "plus the Verlet skin ("
+                       + format_number(needed) + " m)");
+    }
+  } // namespace
+
+  const std::vector<std::string> &
+  strain_csv_columns()
+  {
+    static const std::vector<std::string> names{
+      "eps_xx", "eps_yy", "eps_zz", "eps_yz", "eps_xz", "eps_xy"};
+    return names;
+  }
+
+  std::vector<Eigen::Matrix3d>
+  read_strain_increments(const std::string &file, const std::string &entry)
+  {
+    std::ifstream in(file);
+    if (!in)
+      reject_entry(entry, file, "cannot open the file");
+    std::vector<Eigen::Matrix3d> increments;
+    std::vector<int>             slot; // Voigt index of each column, or -1
+    std::string                  line;
+    int                          number = 0;
+    auto                         trim   = [](std::string t) {
+      const auto b = t.find_first_not_of(" \t\r");
+      const auto e = t.find_last_not_of(" \t\r");
+      return b == std::string::npos ? std::string() : t.substr(b, e - b + 1);
+    };
+    while (std::getline(in, line))
+      {
+        ++number;
+        line = trim(line);
+        if (line.empty() || line[0] == '#')
+          continue;
+        std::vector<std::string> cells;
+        std::stringstream        split(line);
+        for (std::string cell; std::getline(split, cell, ',');)
+          cells.push_back(trim(cell));
+        const std::string where = "line " + std::to_string(number) + ": ";
+        if (slot.empty())
+          {
+            const auto       &names = strain_csv_columns();
+            std::vector<bool> seen(6, false);
+            for (const auto &cell : cells)
+              {
+                const auto it = std::find(names.begin(), names.end(), cell);
+                const int  b = it == names.end() ? -1 : int(it - names.begin());
+                if (b >= 0 && seen[b])
+                  reject_entry(entry,
+                               file,
+                               where + "column '" + cell + "' appears twice");
+                if (b >= 0)
+                  seen[b] = true;
+                slot.push_back(b);
+              }
+            for (int b = 0; b < 6; ++b)
+              if (!seen[b])
+                reject_entry(entry,
+                             file,
+                             where + "the header lacks the column '" + names[b]
+                               + "' (need eps_xx, eps_yy, eps_zz, eps_yz, "
+                                 "eps_xz, eps_xy: tensor components)");
+            continue;
+          }
+        if (cells.size() != slot.size())
+          reject_entry(entry,
+                       file,
+                       where + "expected " + std::to_string(slot.size())
+                         + " cells, found " + std::to_string(cells.size()));
+        dem::Vector6d v = dem::Vector6d::Zero();
+        for (std::size_t k = 0; k < cells.size(); ++k)
+          {
+            if (slot[k] < 0)
+              continue;
+            char        *end   = nullptr;
+            const double value = std::strtod(cells[k].c_str(), &end);
+            if (cells[k].empty() || end != cells[k].c_str() + cells[k].size()
+                || !std::isfinite(value))
+              reject_entry(entry,
+                           file,
+                           where + "'" + cells[k] + "' is not a number");
+            if (std::abs(value) >= 0.1)
+              reject_entry(entry,
+                           file,
+                           where + "increment " + cells[k]
+                             + " is not small (|eps| must stay below 0.1 per "
+                               "step)");
+            v[slot[k]] = value;
+          }
+        // Tensor components: the shears enter the symmetric tensor as given.
+        Eigen::Matrix3d e;
+        e << v[0], v[5], v[4], //
+          v[5], v[1], v[3],    //
+          v[4], v[3], v[2];
+        increments.push_back(e);
+      }
+    if (slot.empty())
+      reject_entry(entry, file, "the file has no header line");
+    if (increments.empty())
+      reject_entry(entry, file, "the file has no strain increments");
+    return increments;
+  }
+
+  void
+  declare_rve_cell_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    declare_particle_material(prm, material_1);
+    prm.leave_subsection();
+
+    prm.enter_subsection("Bonding");
+    prm.declare_entry("Fracture toughness from energies",
+                      "false",
+                      dealii::Patterns::Bool(),
+                      "true: K_Ic = sqrt(2 (2 omega + G_p) E) from the "
+                      "Material's surface energy omega (Gonzalez 2018 after "
+                      "Eq. 5); false: the Fracture toughness entry.");
+    declare_quantity(prm,
+                     "Fracture toughness",
+                     "1.26e6",
+                     non_negative(),
+                     "Pa m^1/2",
+                     "Fracture toughness K_Ic of the solid bridges between "
+                     "particles (Material 1 of Gonzalez 2018, Table 1); 0 "
+                     "for no bonding.");
+    declare_quantity(prm,
+                     "Plastic dissipation",
+                     "0",
+                     non_negative(),
+                     "J/m^2",
+                     "G_p added to the surface energies when K_Ic is "
+                     "computed from energies.");
+    declare_quantity(prm,
+                     "Regularization parameter",
+                     "0.01",
+                     positive(),
+                     "-",
+                     "xi_B of the regularized law, Eq. (4).");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Packing");
+    prm.declare_entry("Number of particles",
+                      "200",
+                      dealii::Patterns::Integer(2, 10000000),
+                      "Spheres in the fully periodic cubic cell, in [2, 1e7].");
+    prm.declare_entry("Size distribution",
+                      "monodisperse",
+                      dealii::Patterns::Selection(
+                        "monodisperse|log-normal|quantiles"),
+                      "monodisperse: every radius is Material/Radius; "
+                      "log-normal: ln R normal with median Material/Radius, "
+                      "Log-normal sigma and the radius cut-offs; quantiles: "
+                      "a log-normal fitted to the volume quantiles x10, x50, "
+                      "x90 (Giannis 2021 Table 1), sampled by number "
+                      "(Hatch-Choate) between the diameter cut-offs.");
+    declare_quantity(prm,
+                     "Log-normal sigma",
+                     "0.1",
+                     non_negative(),
+                     "-",
+                     "Standard deviation of ln R (Size distribution = "
+                     "log-normal).");
+    declare_quantity(prm,
+                     "Minimum radius",
+                     "0",
+                     non_negative(),
+                     "m",
+                     "Lower cut-off of the log-normal radii.");
+    declare_quantity(prm,
+                     "Maximum radius",
+                     "1",
+                     positive(),
+                     "m",
+                     "Upper cut-off of the log-normal radii.");
+    declare_quantity(prm,
+                     "x10",
+                     "360e-6",
+                     positive(),
+                     "m",
+                     "Volume (Q3) 10% diameter (Size distribution = "
+                     "quantiles).");
+    declare_quantity(
+      prm, "x50", "440e-6", positive(), "m", "Volume (Q3) median diameter.");
+    declare_quantity(
+      prm, "x90", "540e-6", positive(), "m", "Volume (Q3) 90% diameter.");
+    declare_quantity(prm,
+                     "Minimum diameter",
+                     "300e-6",
+                     non_negative(),
+                     "m",
+                     "Lower cut-off of the sampled diameters (quantiles).");
+    declare_quantity(prm,
+                     "Maximum diameter",
+                     "600e-6",
+                     positive(),
+                     "m",
+                     "Upper cut-off of the sampled diameters (quantiles).");
+    declare_quantity(prm,
+                     "Initial relative density",
+                     "0.55",
+                     open(0.0, 0.74),
+                     "-",
+                     "Solid fraction of the virgin packing the path starts "
+                     "from (compression of a loose gas with frozen "
+                     "histories; above ~0.64 it is already loaded).");
+    declare_quantity(prm,
+                     "Insertion density",
+                     "0.25",
+                     open(0.0, 0.38),
+                     "-",
+                     "Solid fraction at which the spheres are inserted at "
+                     "random before the gas is compressed.");
+    declare_quantity(prm,
+                     "Verlet skin",
+                     "0.3",
+                     open(0.0, 2.0),
+                     "-",
+                     "Verlet skin of the contact list as a fraction of the "
+                     "median radius.");
+    prm.declare_entry("Seed",
+                      "1",
+                      dealii::Patterns::Integer(0),
+                      "Seed of the packing's random numbers (same seed, "
+                      "same packing), >= 0.");
+    prm.leave_subsection();
+  }
+
+  void
+  declare_rve_solver_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Solver");
+    declare_quantity(prm,
+                     "Force tolerance",
+                     "1e-6",
+                     open(0.0, 1.0),
+                     "-",
+                     "Converged when the largest net force on a particle is "
+                     "below this times the mean contact force.");
+    declare_quantity(prm,
+                     "Step tolerance",
+                     "1e-4",
+                     open(0.0, 1.0),
+                     "-",
+                     "... and the largest particle displacement of the last "
+                     "Newton step is below this times the mean radius.");
+    prm.declare_entry("Maximum iterations",
+                      "200",
+                      dealii::Patterns::Integer(1, 1000000),
+                      "Trust-region Newton iterations per sub-step before "
+                      "the sub-step is cut back, in [1, 1e6].");
+    declare_quantity(prm,
+                     "Jamming pressure",
+                     "0.5e6",
+                     non_negative(),
+                     "Pa",
+                     "Below this mean compressive stress a step relaxes by "
+                     "FIRE with frozen histories (the loose cell has no "
+                     "stiffness for Newton).");
+    prm.leave_subsection();
+  }
+
+  void
+  declare_rve_parameters(dealii::ParameterHandler &prm)
+  {
+    declare_rve_cell_parameters(prm);
+    prm.enter_subsection("Strain path");
+    prm.declare_entry("Path",
+                      "uniaxial",
+                      dealii::Patterns::Selection("uniaxial|hydrostatic|csv"),
+                      "uniaxial: F = diag(1, 1, rho_0/rho), die-like "
+                      "compaction along z in equal density steps; "
+                      "hydrostatic: F = (rho_0/rho)^(1/3) I; csv: F <- (I + "
+                      "eps) F for each row of the Strain increments file.");
+    declare_quantity(prm,
+                     "Target relative density",
+                     "0.8",
+                     open(0.0, 1.0),
+                     "-",
+                     "Relative density at the end of loading (uniaxial, "
+                     "hydrostatic); above the Initial relative density.");
+    prm.declare_entry("Loading steps",
+                      "25",
+                      dealii::Patterns::Integer(1, 100000),
+                      "Equal density steps of loading (uniaxial, "
+                      "hydrostatic; sub-steps are cut back automatically), in "
+                      "[1, 100000].");
+    prm.declare_entry("Unloading",
+                      "true",
+                      dealii::Patterns::Bool(),
+                      "Unload along the same path after loading: uniaxial "
+                      "until the axial stress sigma_zz, hydrostatic until the "
+                      "mean stress vanishes; csv: the increments undone in "
+                      "reverse order until the mean stress vanishes.");
+    declare_quantity(prm,
+                     "Unloading strain step",
+                     "5e-4",
+                     open(0.0, 0.1),
+                     "-",
+                     "Logarithmic strain per unloading step (eps_zz for "
+                     "uniaxial, each normal strain for hydrostatic).");
+    prm.declare_entry("Maximum unloading steps",
+                      "500",
+                      dealii::Patterns::Integer(1, 100000),
+                      "Unloading stops after this many steps even if the "
+                      "stress has not vanished, in [1, 100000].");
+    prm.declare_entry("Strain increments file",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "Path = csv: a CSV file with a header naming the "
+                      "columns eps_xx, eps_yy, eps_zz, eps_yz, eps_xz, eps_xy "
+                      "(tensor components, not engineering shears) and one "
+                      "small strain increment per row, applied to the "
+                      "current configuration. A relative path is taken from "
+                      "the folder of the .prm.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    prm.declare_entry("Tangent interval",
+                      "1",
+                      dealii::Patterns::Integer(0, 100000),
+                      "Condensed and affine tangents and elastic moduli "
+                      "(moduli.csv) every this many steps; also at the end of "
+                      "loading and of the path. 0: only there.");
+    prm.declare_entry("Finite-difference check interval",
+                      "5",
+                      dealii::Patterns::Integer(0, 100000),
+                      "Compare the condensed tangent with central finite "
+                      "differences of the cell (12 equilibrium solves, "
+                      "histories frozen) every this many steps "
+                      "(tangent_fd_error in moduli.csv), at a trial state "
+                      "half a step further along the path equilibrated with "
+                      "frozen histories: a converged state puts every "
+                      "loading contact on the kink between its plastic and "
+                      "unloading branches, where a central difference "
+                      "approximates neither. 0: never.");
+    declare_quantity(prm,
+                     "Finite-difference strain step",
+                     "1e-8",
+                     open(0.0, 1e-2),
+                     "-",
+                     "Strain perturbation h of the finite-difference tangent "
+                     "(small: a contact crossing a kink of its law within +-h "
+                     "spoils a central difference; 1e-6 gives ~5e-4 error "
+                     "on the default case, 1e-8 ~3e-7) "
+                     "(engineering shears).");
+    declare_quantity(prm,
+                     "Finite-difference force tolerance",
+                     "1e-10",
+                     open(0.0, 1.0),
+                     "-",
+                     "Equilibrium force (and step) tolerance of the "
+                     "finite-difference solves; the stress error it leaves "
+                     "is divided by h.");
+    prm.declare_entry("Snapshot interval",
+                      "5",
+                      dealii::Patterns::Integer(0, 100000),
+                      "VTU snapshot of the particles (wrapped into the cell) "
+                      "every this many steps, listed in snapshots.pvd; 0: "
+                      "none.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Size study");
+    prm.declare_entry("Cell sizes",
+                      "",
+                      dealii::Patterns::List(
+                        dealii::Patterns::Integer(2, 10000000)),
+                      "Particle counts of an RVE-size study (Giannis 2021 "
+                      "Sec. 4.1): the same path for each cell, with the same "
+                      "packing statistics and seeds Seed, Seed+1, ...; "
+                      "writes rve_size_study.csv and the spread between "
+                      "sizes. Empty: one run with Packing/Number of "
+                      "particles.");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Checkpoints");
+    prm.declare_entry("Checkpoint interval",
+                      "0",
+                      dealii::Patterns::Integer(0, 100000),
+                      "Write checkpoints/rve.h5 (cell state, rows so far) "
+                      "every this many steps, atomically; 0: never. At a "
+                      "checkpoint the run refreshes its contact list and "
+                      "solver state, so a resumed run repeats the "
+                      "uninterrupted one exactly.");
+    prm.declare_entry("Stop after steps",
+                      "0",
+                      dealii::Patterns::Integer(0, 100000),
+                      "Stop after this many steps with a checkpoint and "
+                      "publish the output so far; 0: run to the end.");
+    prm.declare_entry("Resume from",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "A checkpoints/rve.h5 (relative to the .prm) of an "
+                      "earlier run with the same "
+                      "parameters: continue its path where the checkpoint "
+                      "was taken (rve.csv and moduli.csv get the earlier "
+                      "rows too). Empty: start afresh.");
+    prm.leave_subsection();
+
+    declare_rve_solver_parameters(prm);
+  }
+
+  RveCell
+  get_rve_cell(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    const dem::ElastoplasticMaterial material = get_particle_material(prm);
+    const double                     omega    = get_surface_energy(prm);
+    const double                     radius   = get_particle_radius(prm);
+    prm.leave_subsection();
+
+    prm.enter_subsection("Bonding");
+    const double K
+      = prm.get_bool("Fracture toughness from energies")
+          ? dem::fracture_toughness_from_energies(material,
+                                                  omega,
+                                                  material,
+                                                  omega,
+                                                  prm.get_double(
+                                                    "Plastic dissipation"))
+          : prm.get_double("Fracture toughness");
+    RveCell s{dem::ContactModel(material,
+                                K,
+                                prm.get_double("Regularization parameter")),
+              {},
+              {}};
+    prm.leave_subsection();
+
+    prm.enter_subsection("Packing");
+    s.packing.particle_count    = prm.get_integer("Number of particles");
+    s.packing.relative_density  = prm.get_double("Initial relative density");
+    s.packing.insertion_density = prm.get_double("Insertion density");
+    s.packing.skin              = prm.get_double("Verlet skin");
+    s.packing.seed = static_cast<std::uint64_t>(prm.get_integer("Seed"));
+    const std::string distribution = prm.get("Size distribution");
+    if (distribution == "monodisperse")
+      {
+        s.packing.sizes.median_radius = radius;
+        s.size_description
+          = "monodisperse, R = " + format_number(radius) + " m";
+      }
+    else if (distribution == "log-normal")
+      {
+        auto &d         = s.packing.sizes;
+        d.median_radius = radius;
+        d.log_sigma     = prm.get_double("Log-normal sigma");
+        d.min_radius    = prm.get_double("Minimum radius");
+        d.max_radius    = prm.get_double("Maximum radius");
+        if (!(d.min_radius < d.max_radius))
+          reject_entry("Packing/Minimum radius",
+                       format_number(d.min_radius),
+                       "must be below the Maximum radius ("
+                         + format_number(d.max_radius) + " m)");
+        if (!(d.min_radius <= radius && radius <= d.max_radius))
+          reject_entry("Material/Radius",
+                       format_number(radius),
+                       "the median radius must lie between the cut-offs");
+        s.size_description = "log-normal, median R = " + format_number(radius)
+                             + " m, sigma = " + format_number(d.log_sigma);
+      }
+    else
+      {
+        const double x10 = prm.get_double("x10"), x50 = prm.get_double("x50"),
+                     x90   = prm.get_double("x90");
+        const double d_min = prm.get_double("Minimum diameter"),
+                     d_max = prm.get_double("Maximum diameter");
+        if (!(x10 < x50 && x50 < x90))
+          reject_entry("Packing/x50",
+                       format_number(x50),
+                       "need x10 < x50 < x90");
+        if (!(d_min < d_max))
+          reject_entry("Packing/Maximum diameter",
+                       format_number(d_max),
+                       "must exceed the Minimum diameter "
+                         + format_number(d_min));
+        const auto fit  = dem::fit_volume_log_normal(x10, x50, x90);
+        s.packing.sizes = dem::number_radius_distribution(fit, d_min, d_max);
+        const double median = s.packing.sizes.median_radius;
+        if (!(0.5 * d_min <= median && median <= 0.5 * d_max))
+          reject_entry("Packing/Minimum diameter",
+                       format_number(d_min),
+                       "the fitted number median diameter "
+                         + format_number(2 * median)
+                         + " m lies outside the cut-offs");
+        s.size_description
+          = "fitted to x10/x50/x90, number median R = " + format_number(median)
+            + " m, sigma = " + format_number(fit.log_sigma);
+      }
+    prm.leave_subsection();
+    return s;
+  }
+
+  dem::RveLoadingOptions
+  get_rve_loading_options(dealii::ParameterHandler &prm)
+  {
+    dem::RveLoadingOptions o;
+    prm.enter_subsection("Solver");
+    o.equilibrium.force_tolerance = prm.get_double("Force tolerance");
+    o.equilibrium.step_tolerance  = prm.get_double("Step tolerance");
+    o.equilibrium.max_iterations  = prm.get_integer("Maximum iterations");
+    o.jamming_pressure            = prm.get_double("Jamming pressure");
+    prm.leave_subsection();
+    return o;
+  }
+
+  RveStudy
+  get_rve_study(dealii::ParameterHandler &prm)
+  {
+    RveCell  cell = get_rve_cell(prm);
+    RveStudy s(std::move(cell.model));
+    s.packing          = cell.packing;
+    s.size_description = cell.size_description;
+
+    prm.enter_subsection("Strain path");
+    const std::string path = prm.get("Path");
+    s.path                 = path == "uniaxial"      ? RvePath::uniaxial
+                             : path == "hydrostatic" ? RvePath::hydrostatic
+                                                     : RvePath::csv;
+    s.target_density       = prm.get_double("Target relative density");
+    s.steps                = prm.get_integer("Loading steps");
+    s.unload               = prm.get_bool("Unloading");
+    s.unloading_step       = prm.get_double("Unloading strain step");
+    s.max_unloading_steps  = prm.get_integer("Maximum unloading steps");
+    s.csv_file             = prm.get("Strain increments file");
+    prm.leave_subsection();
+    if (s.path != RvePath::csv
+        && s.target_density <= s.packing.relative_density)
+      reject_entry("Strain path/Target relative density",
+                   format_number(s.target_density),
+                   "must exceed Packing/Initial relative density = "
+                     + format_number(s.packing.relative_density));
+    if (s.path == RvePath::csv)
+      {
+        if (s.csv_file.empty())
+          reject_entry("Strain path/Strain increments file",
+                       "(empty)",
+                       "Path = csv needs a CSV file of strain increments");
+        s.increments
+          = read_strain_increments(resolve_input_path(s.csv_file).string(),
+                                   "Strain path/Strain increments file");
+        s.steps = static_cast<int>(s.increments.size());
+      }
+
+    prm.enter_subsection("Output");
+    s.tangent_interval   = prm.get_integer("Tangent interval");
+    s.fd_interval        = prm.get_integer("Finite-difference check interval");
+    s.fd_strain_step     = prm.get_double("Finite-difference strain step");
+    s.fd_force_tolerance = prm.get_double("Finite-difference force tolerance");
+    s.snapshot_interval  = prm.get_integer("Snapshot interval");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Size study");
+    const std::string cell_sizes = prm.get("Cell sizes");
+    for (const auto &item :
+         dealii::Utilities::split_string_list(cell_sizes, ','))
+      s.cell_sizes.push_back(
+        static_cast<std::size_t>(dealii::Utilities::string_to_int(item)));
+    prm.leave_subsection();
+    if (s.cell_sizes.size() == 1)
+      reject_entry("Size study/Cell sizes",
+                   std::to_string(s.cell_sizes.front()),
+                   "a size study needs at least two cell sizes (leave it "
+                   "empty for one run)");
+
+    prm.enter_subsection("Checkpoints");
+    s.checkpoint_interval = prm.get_integer("Checkpoint interval");
+    s.stop_after          = prm.get_integer("Stop after steps");
+    s.resume_from         = prm.get("Resume from");
+    if (!s.resume_from.empty())
+      s.resume_from = resolve_input_path(s.resume_from).string();
+    prm.leave_subsection();
+    if (!s.resume_from.empty()
+        && !std::filesystem::is_regular_file(s.resume_from))
+      reject_entry("Checkpoints/Resume from",
+                   s.resume_from,
+                   "no such checkpoint file");
+    if (!s.cell_sizes.empty() && (!s.resume_from.empty() || s.stop_after > 0))
+      reject_entry("Size study/Cell sizes",
+                   cell_sizes,
+                   "a size study cannot be stopped or resumed (leave "
+                   "Checkpoints/Resume from empty and Stop after steps 0)");
+
+    s.loading = get_rve_loading_options(prm);
+
+    if (s.cell_sizes.empty())
+      check_cell_width("Packing/Number of particles",
+                       s.packing.particle_count,
+                       s);
+    else
+      for (const std::size_t n : s.cell_sizes)
+        check_cell_width("Size study/Cell sizes", n, s);
+    return s;
+  }
+} // namespace compax::cli

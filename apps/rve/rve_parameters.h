@@ -1,0 +1,125 @@
+#pragma once
+
+#include "dem/rve/homogenization.h"
+#include "dem/rve/periodic_packing.h"
+#include "dem/rve/rve_loading.h"
+#include "dem/solver/contact_model.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace compax::cli
+{
+  /// The macroscopic strain paths of `compax rve`.
+  enum class RvePath
+  {
+    /// F = diag(1, 1, rho_0 / rho): die-like compaction along z.
+    uniaxial,
+    /// F = (rho_0 / rho)^(1/3) I.
+    hydrostatic,
+    /// F <- (I + eps_k) F for the strain increments eps_k of a CSV file.
+    csv
+  };
+
+  /// Everything `compax rve` reads from its .prm, in the library's types.
+  struct RveStudy
+  {
+    explicit RveStudy(dem::ContactModel model)
+        : model(std::move(model))
+    {
+    }
+
+    dem::ContactModel        model;
+    dem::PeriodicPackingSpec packing;
+    /// How the size distribution was given (for the log).
+    std::string size_description;
+
+    RvePath path = RvePath::uniaxial;
+    /// Relative density at the end of loading (uniaxial, hydrostatic) [-].
+    double target_density = 0.8;
+    /// Loading steps of equal density increment (uniaxial, hydrostatic).
+    int steps = 25;
+    /// Unload along the same path until the axial (uniaxial) or mean
+    /// stress vanishes.
+    bool unload = true;
+    /// Logarithmic strain per unloading step (uniaxial, hydrostatic) [-].
+    double unloading_step      = 5e-4;
+    int    max_unloading_steps = 500;
+    /// Strain increments of the csv path (tensor components).
+    std::vector<Eigen::Matrix3d> increments;
+    std::string                  csv_file;
+
+    /// Tangents every this many steps (0: only at the end of loading and
+    /// of the path).
+    int tangent_interval = 1;
+    /// Finite-difference check every this many unloading steps (0: never).
+    int    fd_interval    = 0;
+    double fd_strain_step = 1e-8;
+    /// Equilibrium force tolerance of the finite-difference solves [-].
+    double fd_force_tolerance = 1e-10;
+    /// VTU snapshots every this many steps (0: none).
+    int snapshot_interval = 0;
+
+    /// Particle counts of a cell-size study; empty: one run.
+    std::vector<std::size_t> cell_sizes;
+
+    dem::RveLoadingOptions loading;
+
+    int         checkpoint_interval = 0;
+    int         stop_after          = 0;
+    std::string resume_from;
+  };
+
+  /// A periodic cell to generate: its contact model and packing.
+  struct RveCell
+  {
+    dem::ContactModel        model;
+    dem::PeriodicPackingSpec packing;
+    /// How the size distribution was given (for the log).
+    std::string size_description;
+  };
+
+  /// Declares the subsections Material, Bonding and Packing of a cell
+  /// (shared by `compax rve` and `compax database`).
+  void
+  declare_rve_cell_parameters(dealii::ParameterHandler &prm);
+
+  /// Reads them; throws InputError naming the entry.
+  RveCell
+  get_rve_cell(dealii::ParameterHandler &prm);
+
+  /// Declares the subsection Solver of an RVE driven along a path.
+  void
+  declare_rve_solver_parameters(dealii::ParameterHandler &prm);
+
+  /// Reads it.
+  dem::RveLoadingOptions
+  get_rve_loading_options(dealii::ParameterHandler &prm);
+
+  /// Declares the subsections Material, Bonding, Packing, Strain path,
+  /// Output, Size study, Checkpoints, Solver.
+  void
+  declare_rve_parameters(dealii::ParameterHandler &prm);
+
+  /// Reads and cross-checks them (and reads the CSV of a csv path); throws
+  /// InputError naming the entry.
+  RveStudy
+  get_rve_study(dealii::ParameterHandler &prm);
+
+  /// Voigt-ordered names of the strain-increment columns of a csv path.
+  const std::vector<std::string> &
+  strain_csv_columns();
+
+  /**
+   * Reads strain increments (tensor components eps_xx, eps_yy, eps_zz,
+   * eps_yz, eps_xz, eps_xy, any column order, header required, '#'
+   * comments and blank lines skipped). Throws InputError naming `entry`
+   * and the line on a malformed file.
+   */
+  std::vector<Eigen::Matrix3d>
+  read_strain_increments(const std::string &file, const std::string &entry);
+} // namespace compax::cli

@@ -1,0 +1,734 @@
+#include "apps/rve/rve_run.h"
+
+#include "apps/cli/input_error.h"
+#include "apps/cli/parameters.h"
+#include "apps/common/csv_writer.h"
+#include "apps/common/gnuplot.h"
+#include "apps/rve/rve_measures.h"
+#include "apps/rve/rve_snapshot.h"
+#include "coupling/elastic_moduli.h"
+#include "coupling/rve_archive.h"
+#include "dem/io/particle_vtu.h"
+#include "dem/rve/periodic_bed_system.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+namespace compax::cli
+{
+  namespace
+  {
+    constexpr double      nan = std::numeric_limits<double>::quiet_NaN();
+    constexpr const char *checkpoint_format = "compax rve checkpoint 1";
+
+    using Clock = std::chrono::steady_clock;
+
+    double
+    seconds_since(const Clock::time_point t)
+    {
+      return std::chrono::duration<double>(Clock::now() - t).count();
+    }
+
+    std::size_t
+    index_of(const std::vector<std::string> &names, const std::string &name)
+    {
+      const auto it = std::find(names.begin(), names.end(), name);
+      if (it == names.end())
+        throw std::logic_error("no column '" + name + "'");
+      return it - names.begin();
+    }
+
+    /// Writes rows of numbers; "stage" as text, NaN as an empty cell.
+    void
+    write_table(const std::filesystem::path            &file,
+                const std::vector<std::string>         &columns,
+                const std::vector<std::vector<double>> &rows)
+    {
+      CsvWriter         csv(file, columns);
+      const std::size_t stage = index_of(columns, "stage");
+      for (const auto &row : rows)
+        {
+          for (std::size_t k = 0; k < columns.size(); ++k)
+            if (k == stage)
+              csv << std::string(row[k] == 0.0 ? "loading" : "unloading");
+            else if (std::isnan(row[k]))
+              csv.empty();
+            else if (columns[k] == "step" || columns[k] == "iterations"
+                     || columns[k] == "substeps" || columns[k] == "cutbacks"
+                     || columns[k] == "bonds" || columns[k] == "bonds_formed"
+                     || columns[k] == "bonds_broken" || columns[k] == "jammed")
+              csv << static_cast<long long>(row[k]);
+            else
+              csv << row[k];
+          csv.end_row();
+        }
+      csv.close();
+    }
+
+    /// The symmetric part of a tangent (Cauchy-stress tangents carry a
+    /// non-symmetric -sigma tr(eps) term); the elastic constants are read
+    /// from it.
+    dem::Matrix6d
+    symmetric(const dem::Matrix6d &C)
+    {
+      return 0.5 * (C + C.transpose());
+    }
+
+    /// C11 C33 C12 C13 C44 of the transversely isotropic part of C.
+    std::array<double, 5>
+    ti_entries(const dem::Matrix6d &C)
+    {
+      const auto P = coupling::transversely_isotropic_projection(symmetric(C));
+      return {P(0, 0), P(2, 2), P(0, 1), P(0, 2), P(3, 3)};
+    }
+
+    std::vector<double>
+    flatten(const std::vector<std::vector<double>> &rows, std::size_t width)
+    {
+      std::vector<double> v;
+      v.reserve(rows.size() * width);
+      for (const auto &r : rows)
+        v.insert(v.end(), r.begin(), r.end());
+      return v;
+    }
+
+    std::vector<std::vector<double>>
+    unflatten(const std::vector<double> &v, std::size_t width)
+    {
+      if (width == 0 || v.size() % width != 0)
+        throw std::runtime_error("malformed table");
+      std::vector<std::vector<double>> rows;
+      for (std::size_t k = 0; k < v.size(); k += width)
+        rows.emplace_back(v.begin() + k, v.begin() + k + width);
+      return rows;
+    }
+
+    void
+    plot(const std::filesystem::path &folder)
+    {
+      render_png(folder,
+                 "stress_strain.gp",
+                 "set datafile separator ','\nset datafile columnheaders\n"
+                 "set key top left\n"
+                 "set xlabel 'compressive axial log strain -eps_{zz} [-]'\n"
+                 "set ylabel 'compressive stress [MPa]'\n"
+                 "plot 'rve.csv' using (-column('eps_zz')):"
+                 "(-column('sigma_zz')/1e6) with linespoints pt 7 ps 0.4 "
+                 "title '-sigma_{zz}', '' using (-column('eps_zz')):"
+                 "(-column('sigma_xx')/1e6) with linespoints pt 6 ps 0.4 "
+                 "title '-sigma_{xx}', '' using (-column('eps_zz')):"
+                 "(-column('sigma_yy')/1e6) with linespoints pt 4 ps 0.4 "
+                 "title '-sigma_{yy}'\n",
+                 "stress_strain.png");
+      render_png(folder,
+                 "moduli.gp",
+                 "set datafile separator ','\nset datafile columnheaders\n"
+                 "set key top left\nset multiplot layout 1,2\n"
+                 "set xlabel 'relative density [-]'\n"
+                 "set ylabel 'elastic (unloading) moduli [GPa]'\n"
+                 "plot 'moduli.csv' using 'relative_density':"
+                 "(column('E')/1e9) with linespoints pt 7 ps 0.5 title "
+                 "'E (isotropic)', '' using 'relative_density':"
+                 "(column('E_z')/1e9) with linespoints pt 6 ps 0.5 title "
+                 "'E_z', '' using 'relative_density':(column('E_p')/1e9) "
+                 "with linespoints pt 4 ps 0.5 title 'E_p'\n"
+                 "set ylabel 'consistent tangent C_{33} [GPa]'\n"
+                 "plot 'moduli.csv' using 'relative_density':"
+                 "(column('C33')/1e9) with linespoints pt 7 ps 0.5 title "
+                 "'condensed', '' using 'relative_density':"
+                 "(column('C33_affine')/1e9) with linespoints pt 6 ps 0.5 "
+                 "title 'affine'\nunset multiplot\n",
+                 "moduli.png");
+    }
+
+    std::string
+    fixed(double value, int digits)
+    {
+      std::ostringstream s;
+      s << std::fixed << std::setprecision(digits) << value;
+      return s.str();
+    }
+  } // namespace
+
+  const std::vector<std::string> &
+  rve_columns()
+  {
+    static const std::vector<std::string> names{"step",
+                                                "stage",
+                                                "relative_density",
+                                                "eps_xx",
+                                                "eps_yy",
+                                                "eps_zz",
+                                                "eps_yz",
+                                                "eps_xz",
+                                                "eps_xy",
+                                                "sigma_xx",
+                                                "sigma_yy",
+                                                "sigma_zz",
+                                                "sigma_yz",
+                                                "sigma_xz",
+                                                "sigma_xy",
+                                                "mean_pressure",
+                                                "coordination_number",
+                                                "coordination_without_rattlers",
+                                                "rattler_fraction",
+                                                "bonding_surface",
+                                                "bonds",
+                                                "bonds_formed",
+                                                "bonds_broken",
+                                                "jammed",
+                                                "substeps",
+                                                "cutbacks",
+                                                "iterations",
+                                                "residual",
+                                                "step_seconds"};
+    return names;
+  }
+
+  const std::vector<std::string> &
+  moduli_columns()
+  {
+    static const std::vector<std::string> names{"step",
+                                                "stage",
+                                                "relative_density",
+                                                "E",
+                                                "nu",
+                                                "bulk_modulus",
+                                                "shear_modulus",
+                                                "E_p",
+                                                "nu_p",
+                                                "E_z",
+                                                "nu_zp",
+                                                "G_zp",
+                                                "C11",
+                                                "C33",
+                                                "C12",
+                                                "C13",
+                                                "C44",
+                                                "C11_affine",
+                                                "C33_affine",
+                                                "C12_affine",
+                                                "C13_affine",
+                                                "C44_affine",
+                                                "tangent_fd_error",
+                                                "tangent_seconds"};
+    return names;
+  }
+
+  std::size_t
+  rve_column(const std::string &name)
+  {
+    return index_of(rve_columns(), name);
+  }
+
+  std::size_t
+  moduli_column(const std::string &name)
+  {
+    return index_of(moduli_columns(), name);
+  }
+
+  void
+  write_rve_checkpoint(const std::filesystem::path &file,
+                       const RveStudy              &study,
+                       const dem::PeriodicBed      &bed,
+                       const RveProgress           &p)
+  {
+    std::filesystem::create_directories(file.parent_path());
+    coupling::Hdf5ArchiveWriter archive(file.string());
+    archive.write_attribute("format", checkpoint_format);
+    archive.write_attribute("path", double(static_cast<int>(study.path)));
+    archive.write_attribute("loading_steps", double(study.steps));
+    archive.write_attribute("target_density", study.target_density);
+    archive.write_attribute("unloading_step", study.unloading_step);
+    coupling::save_rve(archive, "rve", bed);
+    archive.write_array("rows",
+                        flatten(p.rows, rve_columns().size()),
+                        {p.rows.size(), rve_columns().size()});
+    archive.write_array("moduli",
+                        flatten(p.moduli, moduli_columns().size()),
+                        {p.moduli.size(), moduli_columns().size()});
+    archive.write_array("snapshots",
+                        std::vector<double>(p.snapshots.begin(),
+                                            p.snapshots.end()));
+    std::vector<double> F(9);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c)
+        F[3 * r + c] = p.loaded_deformation(r, c);
+    archive.write_array("loaded_deformation", F, {3, 3});
+    archive.commit();
+  }
+
+  RveProgress
+  read_rve_checkpoint(const std::string &file,
+                      const RveStudy    &study,
+                      dem::PeriodicBed  &bed)
+  {
+    const std::string entry = "Checkpoints/Resume from";
+    RveProgress       p;
+    // Nothing may throw through the open HDF5 file (deal.II aborts then):
+    // the first problem is kept and reported once the file is closed.
+    std::string mismatch, error;
+    try
+      {
+        const coupling::Hdf5ArchiveReader archive(file);
+        try
+          {
+            if (!archive.has_attribute("format")
+                || archive.read_text_attribute("format") != checkpoint_format)
+              error = "no '" + std::string(checkpoint_format) + "' tag";
+            else if (archive.read_attribute("path")
+                     != static_cast<int>(study.path))
+              mismatch = "Strain path/Path";
+            else if (archive.read_attribute("loading_steps") != study.steps)
+              mismatch = "Strain path/Loading steps";
+            else if (study.path != RvePath::csv
+                     && archive.read_attribute("target_density")
+                          != study.target_density)
+              mismatch = "Strain path/Target relative density";
+            else if (archive.read_attribute("unloading_step")
+                     != study.unloading_step)
+              mismatch = "Strain path/Unloading strain step";
+            else
+              {
+                bed = coupling::load_rve(archive, "rve", study.model);
+                p.rows
+                  = unflatten(archive.read_array("rows"), rve_columns().size());
+                p.moduli = archive.array_shape("moduli").at(0) == 0
+                             ? std::vector<std::vector<double>>{}
+                             : unflatten(archive.read_array("moduli"),
+                                         moduli_columns().size());
+                for (const double s : archive.read_array("snapshots"))
+                  p.snapshots.push_back(static_cast<int>(s));
+                const auto F = archive.read_array("loaded_deformation");
+                for (int r = 0; r < 3; ++r)
+                  for (int c = 0; c < 3; ++c)
+                    p.loaded_deformation(r, c) = F.at(3 * r + c);
+                if (p.rows.empty())
+                  error = "no rows";
+              }
+          }
+        catch (const std::exception &e)
+          {
+            error = e.what();
+          }
+      }
+    catch (const std::exception &e)
+      {
+        error = e.what();
+      }
+    if (!mismatch.empty())
+      reject_entry(entry,
+                   file,
+                   "the checkpoint was written with another " + mismatch
+                     + "; resume with the parameters of that run");
+    if (!error.empty())
+      reject_entry(entry, file, "not a compax rve checkpoint (" + error + ")");
+    return p;
+  }
+
+  RveOutcome
+  run_rve_path(const RveStudy              &study,
+               dem::PeriodicBed             bed,
+               const std::filesystem::path &folder,
+               const RveProgress           *resumed)
+  {
+    const auto          started = Clock::now();
+    RveOutcome          out;
+    RveProgress        &progress        = out.progress;
+    RveTimings         &timing          = out.timings;
+    const auto         &model           = study.model;
+    const std::size_t   n_rve           = rve_columns().size();
+    const std::size_t   n_mod           = moduli_columns().size();
+    const std::size_t   c_stage         = rve_column("stage");
+    const std::size_t   c_rho           = rve_column("relative_density");
+    const std::size_t   c_szz           = rve_column("sigma_zz");
+    const std::size_t   c_p             = rve_column("mean_pressure");
+    const auto          checkpoint      = folder / "checkpoints" / "rve.h5";
+    const auto          snapshot_folder = folder / "snapshots";
+    const std::uint64_t n_particles     = bed.particles.size();
+
+    auto loading = std::make_unique<dem::RveLoading>(model, study.loading);
+    // F_k F_{k-1}^{-1} - I of the last step (the direction of the trial
+    // state of a finite-difference check).
+    Eigen::Matrix3d last_increment = Eigen::Matrix3d::Zero();
+    auto            tangent        = std::make_unique<dem::TangentCalculator>();
+    dem::EquilibriumOptions fd_options = study.loading.equilibrium;
+    fd_options.force_tolerance
+      = std::min(fd_options.force_tolerance, study.fd_force_tolerance);
+    fd_options.step_tolerance
+      = std::min(fd_options.step_tolerance, study.fd_force_tolerance);
+
+    // One row of rve.csv for the current state.
+    const auto record = [&](int                       step,
+                            bool                      unloading,
+                            const dem::RveStepResult *r,
+                            double                    step_seconds) {
+      std::vector<double>   row(n_rve, nan);
+      const Eigen::Matrix3d eps   = dem::logarithmic_strain(bed.deformation);
+      const Eigen::Matrix3d sigma = dem::love_weber_stress(bed);
+      const RveMeasures     m     = measure_rve(bed);
+      auto set = [&](const char *name, double v) { row[rve_column(name)] = v; };
+      set("step", step);
+      set("stage", unloading ? 1.0 : 0.0);
+      set("relative_density", bed.relative_density());
+      set("eps_xx", eps(0, 0));
+      set("eps_yy", eps(1, 1));
+      set("eps_zz", eps(2, 2));
+      set("eps_yz", eps(1, 2));
+      set("eps_xz", eps(0, 2));
+      set("eps_xy", eps(0, 1));
+      set("sigma_xx", sigma(0, 0));
+      set("sigma_yy", sigma(1, 1));
+      set("sigma_zz", sigma(2, 2));
+      set("sigma_yz", 0.5 * (sigma(1, 2) + sigma(2, 1)));
+      set("sigma_xz", 0.5 * (sigma(0, 2) + sigma(2, 0)));
+      set("sigma_xy", 0.5 * (sigma(0, 1) + sigma(1, 0)));
+      set("mean_pressure", -sigma.trace() / 3.0);
+      set("coordination_number", m.coordination_number);
+      set("coordination_without_rattlers", m.coordination_without_rattlers);
+      set("rattler_fraction", m.rattler_fraction);
+      set("bonding_surface", m.bonding_surface);
+      set("bonds", double(m.n_bonds));
+      set("bonds_formed", r ? double(r->bonds.formed) : 0.0);
+      set("bonds_broken", r ? double(r->bonds.broken) : 0.0);
+      set("jammed", r ? double(r->jammed) : 0.0);
+      set("substeps", r ? r->substeps : 0);
+      set("cutbacks", r ? r->cutbacks : 0);
+      set("iterations", r ? r->iterations : 0);
+      set("residual", r ? r->relative_residual : 0.0);
+      set("step_seconds", step_seconds);
+      progress.rows.push_back(row);
+    };
+
+    // Tangents and moduli at the current state (jammed cells only: a loose
+    // cell has no stiffness); the finite-difference check if asked.
+    const auto moduli = [&](int step, bool unloading, bool check) {
+      // A loose cell has no stiffness; a bonded cell in tension has.
+      if (std::abs(dem::mean_pressure(bed)) < study.loading.jamming_pressure)
+        return;
+      std::vector<double> row(n_mod, nan);
+      auto                set
+        = [&](const char *name, double v) { row[moduli_column(name)] = v; };
+      const auto              t0 = Clock::now();
+      const dem::CellTangents current
+        = tangent->compute(bed, model, dem::ContactBranch::current);
+      const double seconds = seconds_since(t0);
+      timing.tangents += seconds;
+      ++timing.n_tangents;
+      const dem::CellTangents elastic
+        = tangent->compute(bed, model, dem::ContactBranch::unloading);
+      set("step", step);
+      set("stage", unloading ? 1.0 : 0.0);
+      set("relative_density", bed.relative_density());
+      const auto iso
+        = coupling::isotropic_projection(symmetric(elastic.condensed));
+      set("E", iso.youngs_modulus);
+      set("nu", iso.poisson_ratio);
+      set("bulk_modulus", iso.bulk_modulus);
+      set("shear_modulus", iso.shear_modulus);
+      try
+        {
+          const auto ti = coupling::transversely_isotropic_moduli(
+            symmetric(elastic.condensed));
+          set("E_p", ti.youngs_in_plane);
+          set("nu_p", ti.poisson_in_plane);
+          set("E_z", ti.youngs_axial);
+          set("nu_zp", ti.poisson_axial_to_plane);
+          set("G_zp", ti.shear_axial);
+        }
+      catch (const std::domain_error &)
+        {
+          // Not positive definite (a barely jammed cell): left empty.
+        }
+      const auto  c        = ti_entries(current.condensed);
+      const auto  a        = ti_entries(current.affine);
+      const char *names[5] = {"C11", "C33", "C12", "C13", "C44"};
+      for (int k = 0; k < 5; ++k)
+        {
+          set(names[k], c[k]);
+          row[moduli_column(std::string(names[k]) + "_affine")] = a[k];
+        }
+      set("tangent_seconds", seconds);
+      if (check)
+        {
+          // At a trial state half a step further along the path,
+          // equilibrated with frozen histories: a converged state puts
+          // every loading contact on the kink between its plastic and
+          // elastic branches, where a central difference approximates
+          // neither; past it each contact is strictly on one branch.
+          const auto       t1    = Clock::now();
+          dem::PeriodicBed trial = bed;
+          map_affinely(trial,
+                       (Eigen::Matrix3d::Identity() + 0.5 * last_increment)
+                         * bed.deformation);
+          dem::PeriodicAssembler assembler;
+          dem::PeriodicBedSystem system(trial, model, assembler);
+          dem::TrustRegionNewton newton(fd_options);
+          const bool             ok = newton.solve(system).converged;
+          try
+            {
+              if (!ok)
+                throw std::runtime_error("the trial state did not converge");
+              const dem::Matrix6d c
+                = dem::TangentCalculator()
+                    .compute(trial, model, dem::ContactBranch::current)
+                    .condensed;
+              const dem::Matrix6d fd = dem::finite_difference_tangent(
+                trial, model, study.fd_strain_step, fd_options);
+              set("tangent_fd_error", (c - fd).norm() / fd.norm());
+            }
+          catch (const std::runtime_error &e)
+            {
+              std::cout << "  finite-difference check skipped: " << e.what()
+                        << std::endl;
+            }
+          timing.fd_tangents += seconds_since(t1);
+          ++timing.n_fd_tangents;
+        }
+      progress.moduli.push_back(row);
+    };
+
+    const auto write_tables = [&] {
+      write_table(folder / "rve.csv", rve_columns(), progress.rows);
+      write_table(folder / "moduli.csv", moduli_columns(), progress.moduli);
+    };
+
+    const auto snapshot = [&](int step) {
+      std::filesystem::create_directories(snapshot_folder);
+      write_rve_vtu(snapshot_folder / ("rve-" + std::to_string(step) + ".vtu"),
+                    bed);
+      progress.snapshots.push_back(step);
+      std::vector<std::pair<double, std::string>> list;
+      for (const int s : progress.snapshots)
+        list.emplace_back(s, "snapshots/rve-" + std::to_string(s) + ".vtu");
+      dem::write_pvd(folder / "snapshots.pvd", list);
+    };
+
+    int loading_done = 0, unloading_done = 0;
+    if (resumed)
+      {
+        progress = *resumed;
+        for (const auto &row : progress.rows)
+          if (row[rve_column("step")] > 0)
+            (row[c_stage] == 0.0 ? loading_done : unloading_done) += 1;
+        // Snapshots of the earlier part, from the checkpoint's run folder.
+        const auto old_folder = std::filesystem::absolute(study.resume_from)
+                                  .parent_path()
+                                  .parent_path();
+        std::vector<int> kept;
+        for (const int s : progress.snapshots)
+          {
+            const auto name = "rve-" + std::to_string(s) + ".vtu";
+            if (std::filesystem::is_regular_file(old_folder / "snapshots"
+                                                 / name))
+              {
+                std::filesystem::create_directories(snapshot_folder);
+                std::filesystem::copy_file(
+                  old_folder / "snapshots" / name,
+                  snapshot_folder / name,
+                  std::filesystem::copy_options::overwrite_existing);
+                kept.push_back(s);
+              }
+          }
+        progress.snapshots = kept;
+        std::cout << "Resuming from " << study.resume_from << " at step "
+                  << progress.rows.size() - 1 << " (relative density "
+                  << bed.relative_density() << ")" << std::endl;
+      }
+    else
+      {
+        record(0, false, nullptr, 0.0);
+        moduli(0, false, false);
+        if (study.snapshot_interval > 0)
+          snapshot(0);
+      }
+    const double rho0 = progress.rows.front()[c_rho];
+
+    int        step = static_cast<int>(progress.rows.size()) - 1;
+    const auto every
+      = [](int interval, int k) { return interval > 0 && k % interval == 0; };
+    const auto after_step = [&](bool unloading, bool end_of_stage) {
+      const bool check = every(study.fd_interval, step);
+      if (every(study.tangent_interval, step) || end_of_stage || check)
+        moduli(step, unloading, check);
+      if (every(study.snapshot_interval, step) || end_of_stage)
+        if (study.snapshot_interval > 0)
+          snapshot(step);
+      const bool stop = study.stop_after > 0 && step >= study.stop_after;
+      if (every(study.checkpoint_interval, step) || stop)
+        {
+          write_rve_checkpoint(checkpoint, study, bed, progress);
+          // Start afresh from the checkpointed state, as a resumed run does.
+          bed.contacts.rebuild(bed.particles, bed.cell, model);
+          loading = std::make_unique<dem::RveLoading>(model, study.loading);
+          tangent = std::make_unique<dem::TangentCalculator>();
+        }
+      return stop;
+    };
+
+    // Progress on screen.
+    const int  loading_steps = study.steps;
+    const auto report        = [&](bool unloading) {
+      const auto        &row     = progress.rows.back();
+      const double       elapsed = seconds_since(started);
+      std::ostringstream left;
+      if (!unloading && timing.n_steps > 0)
+        left << "~"
+             << fixed(timing.steps / timing.n_steps
+                        * (loading_steps - loading_done),
+                      1)
+             << " s (loading)";
+      else
+        left << "-";
+      std::cout << "step " << step << (unloading ? " unloading " : " loading ")
+                << (unloading ? std::to_string(unloading_done)
+                                     : std::to_string(loading_done) + "/"
+                                  + std::to_string(loading_steps))
+                << "  rho " << fixed(row[c_rho], 4) << "  sigma_zz "
+                << fixed(row[c_szz] / 1e6, 3) << " MPa  p "
+                << fixed(row[c_p] / 1e6, 3) << " MPa  iterations "
+                << static_cast<int>(row[rve_column("iterations")])
+                << "  elapsed " << fixed(elapsed, 1) << " s  left "
+                << left.str() << std::endl;
+    };
+
+    // One step to F (or by a strain increment); false if it failed.
+    const auto advance = [&](bool                   unloading,
+                             const Eigen::Matrix3d &target,
+                             const Eigen::Matrix3d *increment) {
+      const auto               t0      = Clock::now();
+      const Eigen::Matrix3d    F_prev  = bed.deformation;
+      const dem::RveStepResult r       = increment
+                                           ? loading->apply_strain(bed, *increment)
+                                           : loading->deform_to(bed, target);
+      const double             seconds = seconds_since(t0);
+      if (!r.converged)
+        return false;
+      last_increment
+        = bed.deformation * F_prev.inverse() - Eigen::Matrix3d::Identity();
+      timing.steps += seconds;
+      ++timing.n_steps;
+      ++step;
+      (unloading ? unloading_done : loading_done) += 1;
+      record(step, unloading, &r, seconds);
+      return true;
+    };
+
+    const auto fail = [&](const std::string &why) {
+      std::cerr << "compax rve: " << why
+                << "; the converged steps are kept in rve.csv and the last "
+                   "converged state in last_converged.h5\n";
+      coupling::save_rve((folder / "last_converged.h5").string(), bed);
+      out.code = not_converged;
+    };
+
+    const auto loading_target = [&](int k) {
+      const double rho
+        = rho0 + (study.target_density - rho0) * double(k) / loading_steps;
+      Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
+      if (study.path == RvePath::uniaxial)
+        F(2, 2) = rho0 / rho;
+      else
+        F *= std::cbrt(rho0 / rho);
+      return F;
+    };
+
+    try
+      {
+        bool stop = false;
+        while (!stop && loading_done < loading_steps && out.code == success)
+          {
+            const int  k  = loading_done + 1;
+            const bool ok = study.path == RvePath::csv
+                              ? advance(false, {}, &study.increments[k - 1])
+                              : advance(false, loading_target(k), nullptr);
+            if (!ok)
+              {
+                fail("loading step " + std::to_string(k) + " did not converge");
+                break;
+              }
+            if (loading_done == loading_steps)
+              progress.loaded_deformation = bed.deformation;
+            report(false);
+            stop = after_step(false, loading_done == loading_steps);
+          }
+        const auto unloaded = [&] {
+          const auto &row = progress.rows.back();
+          if (row[c_stage] == 0.0)
+            return false;
+          return study.path == RvePath::uniaxial ? row[c_szz] >= 0.0
+                                                 : row[c_p] <= 0.0;
+        };
+        while (!stop && study.unload && out.code == success
+               && loading_done == loading_steps && !unloaded()
+               && unloading_done < study.max_unloading_steps)
+          {
+            const int              u     = unloading_done + 1;
+            const Eigen::Matrix3d &F_max = progress.loaded_deformation;
+            Eigen::Matrix3d        F     = F_max;
+            if (study.path == RvePath::uniaxial)
+              F.row(2) *= std::exp(u * study.unloading_step);
+            else if (study.path == RvePath::hydrostatic)
+              F *= std::exp(u * study.unloading_step);
+            else
+              {
+                if (u > loading_steps)
+                  break;
+                // Undo the increments in reverse order: F_{k-1} = (I +
+                // eps_k)^{-1} F_k.
+                F = (Eigen::Matrix3d::Identity()
+                     + study.increments[loading_steps - u])
+                      .inverse()
+                    * bed.deformation;
+              }
+            if (!advance(true, F, nullptr))
+              {
+                fail("unloading step " + std::to_string(u)
+                     + " did not converge");
+                break;
+              }
+            report(true);
+            const bool last = unloaded()
+                              || unloading_done == study.max_unloading_steps
+                              || (study.path == RvePath::csv
+                                  && unloading_done == loading_steps);
+            stop = after_step(true, last);
+          }
+        out.stopped = stop;
+      }
+    catch (const std::runtime_error &e)
+      {
+        fail(e.what());
+      }
+
+    write_tables();
+    plot(folder);
+    timing.total = seconds_since(started);
+    std::cout << "Cell of " << n_particles << " particles: " << timing.n_steps
+              << " steps, "
+              << fixed(timing.n_steps ? timing.steps / timing.n_steps : 0.0, 4)
+              << " s per step; " << timing.n_tangents << " condensed tangents, "
+              << fixed(timing.n_tangents ? timing.tangents / timing.n_tangents
+                                         : 0.0,
+                       4)
+              << " s each";
+    if (timing.n_fd_tangents > 0)
+      std::cout << "; " << timing.n_fd_tangents
+                << " finite-difference tangents, "
+                << fixed(timing.fd_tangents / timing.n_fd_tangents, 4)
+                << " s each";
+    std::cout << "; total " << fixed(timing.total, 2) << " s" << std::endl;
+    if (out.stopped)
+      std::cout << "Stopped as asked; continue with\n  set Resume from = "
+                   "<OUTDIR>/checkpoints/rve.h5\nin subsection Checkpoints."
+                << std::endl;
+    return out;
+  }
+} // namespace compax::cli

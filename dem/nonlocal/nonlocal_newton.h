@@ -1,0 +1,76 @@
+#pragma once
+
+#include "dem/nonlocal/nonlocal_bed_system.h"
+#include "dem/solver/block_sparse_matrix.h"
+
+#include <Eigen/Core>
+#include <Eigen/SparseLU>
+
+namespace compax::dem
+{
+  /// Tolerances of NonlocalNewtonKrylov.
+  struct NewtonKrylovOptions
+  {
+    /// Converged when max_i |F_i| <= force_tolerance times the mean contact
+    /// force ...
+    double force_tolerance = 1e-6;
+    /// ... and the last step moved no particle farther than this fraction
+    /// of the mean radius [-].
+    double step_tolerance = 1e-4;
+    int    max_iterations = 60;
+    /// GMRES: Krylov dimension before a restart, total iterations, and the
+    /// relative residual of each linear solve [-].
+    int    restart          = 40;
+    int    max_linear       = 400;
+    double linear_tolerance = 1e-4;
+    /// Shift of the preconditioner K_approx + shift * mean diagonal (keeps
+    /// rattlers' zero rows invertible) [-].
+    double preconditioner_shift = 1e-6;
+  };
+
+  /// Outcome of NonlocalNewtonKrylov::solve().
+  struct NewtonKrylovResult
+  {
+    bool        converged         = false;
+    int         iterations        = 0;
+    int         linear_iterations = 0;
+    int         residuals         = 0;
+    int         backtracks        = 0;
+    double      relative_residual = 0.0;
+    ContactSums sums;
+  };
+
+  /**
+   * Newton's method with the exact Jacobian of the nonlocal formulation
+   * (NonlocalBedSystem::apply_jacobian: d gamma_NL / dx through the
+   * linearized fixed point, and the turning contact directions), for a
+   * field that is not the gradient of an energy: the linear systems
+   * J s = -F, J not symmetric, are solved by restarted GMRES, right
+   * preconditioned by a sparse LU of the approximate (local-stiffness)
+   * K; the step is capped at a quarter of the Verlet skin per particle and
+   * accepted by backtracking on the residual norm |F| (Armijo), the merit
+   * function of a nonconservative system, instead of the energy decrease
+   * of TrustRegionNewton. Meant for jammed beds near equilibrium (the last
+   * iterations of a load step); floppy, unjammed beds need FIRE or the
+   * trust region.
+   */
+  class NonlocalNewtonKrylov
+  {
+  public:
+    explicit NonlocalNewtonKrylov(NewtonKrylovOptions options = {});
+
+    NewtonKrylovResult
+    solve(NonlocalBedSystem &system);
+
+  private:
+    /// GMRES(m) for J s = b with right preconditioner; returns iterations.
+    int
+    gmres(NonlocalBedSystem &system, const Eigen::VectorXd &b);
+
+    NewtonKrylovOptions                          opts;
+    BlockSparseMatrix                            K;
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    Eigen::VectorXd                              F, F_trial, s, x_old, w, z;
+    Eigen::MatrixXd                              V, Z, H;
+  };
+} // namespace compax::dem

@@ -1,0 +1,344 @@
+// The particle solver with the nonlocal contact formulation (Gonzalez &
+// Cuitino 2012) in a square die, checked against Hertz forces summed here
+// independently, central finite differences of the residual, the closed
+// form of the chain between plates (Eqs. 11, 17, solved here by
+// bisection), and the balance of the wall forces at equilibrium.
+
+#include "dem/contact/pair_properties.h"
+#include "dem/nonlocal/nonlocal_bed_system.h"
+#include "dem/nonlocal/nonlocal_newton.h"
+#include "dem/nonlocal/square_die_compaction.h"
+#include "dem/nonlocal/square_die_deposition.h"
+#include "dem/solver/trust_region_newton.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace
+{
+  using namespace compax::dem;
+
+  constexpr double pi = 3.14159265358979323846;
+
+  const std::vector<ElasticMaterial> two_materials{{19e9, 0.30}, {7e9, 0.20}};
+
+  /// A 2x2x2 block of spheres on a perturbed cubic lattice, pressed
+  /// together by ~2 % of R and against the six walls of a square die.
+  struct Cluster
+  {
+    ParticleSystem particles;
+    SquareDie      die;
+  };
+
+  Cluster
+  make_cluster(const unsigned int seed)
+  {
+    std::mt19937                           gen(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Cluster                                c;
+    const double                           R = 100e-6, a = 1.96 * R;
+    for (int k = 0; k < 2; ++k)
+      for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i)
+          {
+            const Eigen::Vector3d x((i - 0.5) * a + 3e-3 * R * u(gen),
+                                    (j - 0.5) * a + 3e-3 * R * u(gen),
+                                    (k + 0.5) * a + 3e-3 * R * u(gen));
+            c.particles.add(x, R * (1.0 + 0.01 * u(gen)), (i + j + k) % 2);
+          }
+    c.die.width              = 2.0 * a;
+    c.die.lower_punch_height = 0.0;
+    c.die.upper_punch_height = 2.0 * a;
+    return c;
+  }
+
+  /// F of Hertz contacts summed pair by pair, Eq. (9) written out here.
+  Eigen::VectorXd
+  independent_hertz_residual(const ParticleSystem &p, const SquareDie &die)
+  {
+    const auto n_H
+      = [](double R1, double E1, double nu1, double R2, double E2, double nu2) {
+          const double inv_E = (1 - nu1 * nu1) / E1
+                               + (std::isinf(E2) ? 0.0 : (1 - nu2 * nu2) / E2);
+          const double inv_R = 1 / R1 + (std::isinf(R2) ? 0.0 : 1 / R2);
+          return 4.0 / 3.0 / inv_E / std::sqrt(inv_R);
+        };
+    Eigen::VectorXd F = Eigen::VectorXd::Zero(3 * p.size());
+    for (std::size_t i = 0; i < p.size(); ++i)
+      {
+        const auto &mi = two_materials[p.materials[i]];
+        for (std::size_t j = i + 1; j < p.size(); ++j)
+          {
+            const auto           &mj = two_materials[p.materials[j]];
+            const Eigen::Vector3d d  = p.positions[j] - p.positions[i];
+            const double          g  = p.radii[i] + p.radii[j] - d.norm();
+            if (g <= 0)
+              continue;
+            const double P = n_H(p.radii[i],
+                                 mi.youngs_modulus,
+                                 mi.poisson_ratio,
+                                 p.radii[j],
+                                 mj.youngs_modulus,
+                                 mj.poisson_ratio)
+                             * std::pow(g, 1.5);
+            F.segment<3>(3 * i) += P * d.normalized();
+            F.segment<3>(3 * j) -= P * d.normalized();
+          }
+        // Walls: the wall pushes the sphere back inside.
+        const double half    = 0.5 * die.width;
+        const double dist[6] = {p.positions[i][2] - die.lower_punch_height,
+                                die.upper_punch_height - p.positions[i][2],
+                                p.positions[i][0] + half,
+                                half - p.positions[i][0],
+                                p.positions[i][1] + half,
+                                half - p.positions[i][1]};
+        const Eigen::Vector3d into[6] = {
+          {0, 0, -1}, {0, 0, 1}, {-1, 0, 0}, {1, 0, 0}, {0, -1, 0}, {0, 1, 0}};
+        for (int f = 0; f < 6; ++f)
+          {
+            const double g = p.radii[i] - dist[f];
+            if (g > 0)
+              F.segment<3>(3 * i) += n_H(p.radii[i],
+                                         mi.youngs_modulus,
+                                         mi.poisson_ratio,
+                                         rigid,
+                                         rigid,
+                                         0.0)
+                                     * std::pow(g, 1.5) * into[f];
+          }
+      }
+    return F;
+  }
+
+  TEST(NonlocalBedSystem, WithoutNonlocalTermsIsHertz)
+  {
+    Cluster            c = make_cluster(3);
+    NonlocalBedOptions o;
+    o.nonlocal = false;
+    NonlocalBedSystem system(c.particles, two_materials, c.die, o);
+    Eigen::VectorXd   F;
+    system.residual(F);
+    const Eigen::VectorXd ref = independent_hertz_residual(c.particles, c.die);
+    ASSERT_GT(ref.norm(), 0.0);
+    EXPECT_LE((F - ref).cwiseAbs().maxCoeff(),
+              1e-12 * ref.cwiseAbs().maxCoeff());
+    // The nonlocal terms change the forces of the same configuration.
+    system.set_nonlocal(true);
+    Eigen::VectorXd Fnl;
+    system.residual(Fnl);
+    ASSERT_TRUE(system.fixed_point().converged);
+    EXPECT_GT((Fnl - ref).norm(), 1e-3 * ref.norm());
+    // Back to Hertz: the same forces as before, to round-off.
+    system.set_nonlocal(false);
+    system.residual(Fnl);
+    EXPECT_LE((Fnl - ref).cwiseAbs().maxCoeff(),
+              1e-12 * ref.cwiseAbs().maxCoeff());
+  }
+
+  /// Central difference of the residual along v.
+  Eigen::VectorXd
+  central_difference(NonlocalBedSystem     &system,
+                     const Eigen::VectorXd &v,
+                     const double           h)
+  {
+    auto                  x  = system.coordinates();
+    const Eigen::VectorXd x0 = x;
+    Eigen::VectorXd       Fp, Fm;
+    x = x0 + h * v;
+    system.residual(Fp);
+    x = x0 - h * v;
+    system.residual(Fm);
+    x = x0;
+    return (Fp - Fm) / (2 * h);
+  }
+
+  TEST(NonlocalBedSystem, JacobianIsCentralDifferenceOfResidual)
+  {
+    for (const bool nonlocal : {false, true})
+      for (unsigned int seed : {1u, 2u, 5u})
+        {
+          Cluster            c = make_cluster(seed);
+          NonlocalBedOptions o;
+          o.nonlocal                   = nonlocal;
+          o.fixed_point_tolerance      = 1e-18;
+          o.max_fixed_point_iterations = 100000;
+          NonlocalBedSystem system(c.particles, two_materials, c.die, o);
+          Eigen::VectorXd   F, Jv, Kv;
+          BlockSparseMatrix K;
+          std::mt19937      gen(seed);
+          std::normal_distribution<double> normal;
+          Eigen::VectorXd                  v(3 * c.particles.size());
+          for (Eigen::Index k = 0; k < v.size(); ++k)
+            v[k] = normal(gen);
+          system.assemble(F, K);
+          ASSERT_TRUE(F.allFinite());
+          system.apply_jacobian(v, Jv);
+          const Eigen::VectorXd fd
+            = central_difference(system, v, 1e-8 * 100e-6);
+          system.residual(F); // back to the state of K
+          EXPECT_LE((Jv - fd).norm(), 1e-6 * fd.norm())
+            << "nonlocal " << nonlocal << " seed " << seed;
+          // The approximate K is exact for Hertz and only approximate with
+          // the nonlocal terms.
+          Kv.resize(v.size());
+          K.vmult(Kv, v);
+          if (!nonlocal)
+            EXPECT_LE((Kv - fd).norm(), 1e-6 * fd.norm());
+          else
+            EXPECT_GT((Kv - fd).norm(), 1e-3 * fd.norm());
+        }
+  }
+
+  TEST(NonlocalBedSystem, NonlocalJacobianIsNotSymmetric)
+  {
+    // The angle dependence of the influence coefficients: u.J v != v.J u,
+    // so no potential exists (documented in NonlocalBedSystem).
+    Cluster            c = make_cluster(7);
+    NonlocalBedOptions o;
+    o.fixed_point_tolerance = 1e-18;
+    NonlocalBedSystem system(c.particles, two_materials, c.die, o);
+    Eigen::VectorXd   F, Ju, Jv;
+    system.residual(F);
+    std::mt19937                     gen(11);
+    std::normal_distribution<double> normal;
+    Eigen::VectorXd                  u(F.size()), v(F.size());
+    for (Eigen::Index k = 0; k < v.size(); ++k)
+      {
+        u[k] = normal(gen);
+        v[k] = normal(gen);
+      }
+    system.apply_jacobian(u, Ju);
+    system.apply_jacobian(v, Jv);
+    const double scale = Ju.norm() * v.norm();
+    EXPECT_GT(std::abs(v.dot(Ju) - u.dot(Jv)), 1e-8 * scale);
+  }
+
+  /// Chain of n spheres on the z axis between the punches of a wide die,
+  /// punch approach Delta, with the middle spheres displaced from their
+  /// equilibrium.
+  Cluster
+  make_chain(unsigned int n, double R, double Delta)
+  {
+    Cluster      c;
+    const double H           = 2.0 * n * R - Delta;
+    c.die.width              = 10.0 * R;
+    c.die.upper_punch_height = H;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        double z = (k + 0.5) * H / n;
+        if (k > 0 && k + 1 < n)
+          z += 0.2 * Delta / n * (k % 2 ? 1.0 : -1.0);
+        c.particles.add(Eigen::Vector3d(0, 0, z), R, 0);
+      }
+    return c;
+  }
+
+  /// P = n_w (Delta / 2N + c P)^{3/2} (Eqs. 10, 11 for the chain), lower
+  /// root by bisection.
+  double
+  chain_force(unsigned int n, double R, double E, double nu, double Delta)
+  {
+    const double n_w = 4.0 / 3.0 * E / (1 - nu * nu) * std::sqrt(R);
+    const double c   = (1 + nu) * (3 - 2 * nu) / (4 * pi * R * E);
+    const double g   = Delta / (2.0 * n);
+    // f(P) = P - n_w (g + c P)^{3/2}: positive between the two roots.
+    double lo = 0.0, hi = n_w * std::pow(g, 1.5);
+    while (hi - n_w * std::pow(g + c * hi, 1.5) < 0)
+      hi *= 1.01;
+    lo = n_w * std::pow(g, 1.5);
+    for (int i = 0; i < 200; ++i)
+      {
+        const double mid = 0.5 * (lo + hi);
+        (mid - n_w * std::pow(g + c * mid, 1.5) < 0 ? lo : hi) = mid;
+      }
+    return 0.5 * (lo + hi);
+  }
+
+  TEST(NonlocalBedSystem, SolverReachesChainClosedForm)
+  {
+    const double                       R = 0.01, E = 1.85e6, nu = 0.46;
+    const std::vector<ElasticMaterial> rubber{{E, nu}};
+    for (const unsigned int n : {1u, 3u})
+      for (const double eps : {0.002, 0.02})
+        for (const bool krylov : {false, true})
+          {
+            const double      Delta = 2.0 * n * R * eps;
+            Cluster           c     = make_chain(n, R, Delta);
+            NonlocalBedSystem system(c.particles, rubber, c.die);
+            bool              converged;
+            if (krylov)
+              converged = NonlocalNewtonKrylov().solve(system).converged;
+            else
+              converged = TrustRegionNewton().solve(system).converged;
+            ASSERT_TRUE(converged) << n << ' ' << eps << ' ' << krylov;
+            Eigen::VectorXd F;
+            system.residual(F);
+            const double P = chain_force(n, R, E, nu, Delta);
+            EXPECT_NEAR(system.wall_forces()[SquareDie::upper_punch],
+                        P,
+                        1e-6 * P);
+            EXPECT_NEAR(system.wall_forces()[SquareDie::lower_punch],
+                        P,
+                        1e-6 * P);
+            // Eq. (17): D = a eps^{1/2} + 7/(24 pi^2) b^2 eps + O(eps^{3/2})
+            // with eps = Delta / (2 N R) (gamma / 2R of a
+            // sphere-sphere contact).
+            const double e     = Delta / (2.0 * n * R);
+            const double b     = (3 - 2 * nu) / (1 - nu);
+            const double hertz = 4.0 / 3.0 * E / (1 - nu * nu) * std::sqrt(R)
+                                 * std::pow(Delta / (2.0 * n), 1.5);
+            const double D = P / hertz - 1.0;
+            const double D17
+              = b / (2 * pi) * std::sqrt(e) + 7 / (24 * pi * pi) * b * b * e;
+            EXPECT_NEAR(D, D17, 3.0 * std::pow(e, 1.5) * b * b * b);
+          }
+  }
+
+  TEST(NonlocalBedSystem, SquareDieBedBalancesWallForces)
+  {
+    SquareDepositionParameters dp;
+    dp.width = 1e-3;
+    dp.sizes
+      = {{77.46e-6, 0.0161, 75e-6, 80e-6}, {144.5e-6, 0.0724, 125e-6, 167e-6}};
+    dp.counts                = {40, 6};
+    dp.seed                  = 4;
+    const ParticleSystem p   = square_die_deposition(dp);
+    double               top = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      {
+        top = std::max(top, p.positions[i][2] + p.radii[i]);
+        // Inside the die.
+        EXPECT_LE(std::abs(p.positions[i][0]) + p.radii[i],
+                  0.5e-3 * (1 + 1e-12));
+        EXPECT_LE(std::abs(p.positions[i][1]) + p.radii[i],
+                  0.5e-3 * (1 + 1e-12));
+        EXPECT_GE(p.positions[i][2] - p.radii[i], -1e-12 * p.radii[i]);
+      }
+    SquareDie die;
+    die.width              = 1e-3;
+    die.upper_punch_height = top;
+    BedCompactionOptions o;
+    o.final_density    = 0.60;
+    o.density_step     = 0.01;
+    o.jamming_pressure = 2e5;
+    for (const bool nonlocal : {false, true})
+      {
+        const BedCompactionResult r
+          = compact_square_die_bed(p, two_materials, die, nonlocal, o);
+        ASSERT_TRUE(r.complete) << r.stop_reason;
+        const BedCompactionPoint &last = r.points.back();
+        ASSERT_TRUE(last.jammed);
+        const auto &w = last.wall_force;
+        // Newton's third law at equilibrium (no gravity): opposite walls
+        // carry the same force.
+        const double tol = 1e-4 * w[SquareDie::upper_punch];
+        EXPECT_NEAR(w[SquareDie::lower_punch], w[SquareDie::upper_punch], tol);
+        EXPECT_NEAR(w[SquareDie::x_lower], w[SquareDie::x_upper], tol);
+        EXPECT_NEAR(w[SquareDie::y_lower], w[SquareDie::y_upper], tol);
+        EXPECT_GT(w[SquareDie::x_lower], 0.0);
+      }
+  }
+} // namespace
