@@ -145,7 +145,7 @@ namespace compax::dem
                      M,
                      g,
                      std::numeric_limits<double>::infinity(),
-                     1e-8,
+                     1e-6,
                      max_iterations,
                      s);
         iterations += r.iterations;

@@ -62,9 +62,10 @@ namespace compax::dem
    * translations and rattlers, to which G is orthogonal. (At equilibrium
    * the derivative of sum_c g (x) d along w is G^T w exactly: the extra
    * term is sum_i F_i (x) w_i = 0.) The six columns of K^{-1} G come
-   * from block-Jacobi preconditioned CG to 1e-8 (a product with K costs
+   * from block-Jacobi preconditioned CG to 1e-6 (a product with K costs
    * O(N), and a jammed K is well enough conditioned; at 1000 particles
-   * this was 5x faster than a sparse LDL^T). Where CG meets negative
+   * this was 5x faster than a sparse LDL^T, and the tangent agrees with
+   * central differences to ~1e-6). Where CG meets negative
    * curvature (an unstable state) the columns come from a sparse LDL^T of
    * K (Eigen, AMD ordering) shifted by 1e-10 of its mean diagonal, a shift
    * that only removes the null space of rigid translations and rattlers,

@@ -217,12 +217,13 @@ TEST(RveHomogenization, CondensedTangentEqualsFiniteDifference)
         << "trial strain " << trial << "\ncondensed\n"
         << t.condensed << "\nfinite difference\n"
         << fd;
-      // The sparse direct solve gives the same condensation.
+      // The sparse direct solve gives the same condensation, to the
+      // relative tolerance 1e-6 of the iterative solves.
       TangentCalculator  direct(TangentCalculator::Method::direct);
       const CellTangents d = direct.compute(bed, model);
       EXPECT_TRUE(d.direct);
       EXPECT_FALSE(t.direct);
-      EXPECT_LT(relative_difference(d.condensed, t.condensed), 1e-7);
+      EXPECT_LT(relative_difference(d.condensed, t.condensed), 1e-5);
       // The fluctuations relax the cell: softer than affine.
       EXPECT_LT(t.condensed(2, 2), t.affine(2, 2));
       // Unloading is stiffer than plastic loading.
