@@ -1,0 +1,134 @@
+#pragma once
+
+#include "dem/rve/homogenization.h"
+#include "dem/rve/periodic_bed.h"
+#include "dem/rve/periodic_packing.h"
+#include "dem/rve/rve_loading.h"
+#include "fem/material_model.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace compax::coupling
+{
+  /// What an RVE-backed material point is made of.
+  struct RveMaterialSpec
+  {
+    /// Packing statistics of every point's cell; its relative density is
+    /// replaced by the one the tablet model initializes the point with.
+    dem::PeriodicPackingSpec packing;
+    dem::RveLoadingOptions   loading;
+    /// Distinct packings drawn (seeds packing.seed + k); point n starts
+    /// from a copy of packing n mod pool_size, so start-up costs
+    /// pool_size packings, not one per point.
+    unsigned int pool_size = 4;
+    /// Isotropic stiffness added to the condensed tangent [Pa]: a loose
+    /// cell has no contact network and a zero tangent, which leaves the
+    /// continuum Newton singular; the floor keeps it well-posed and is
+    /// negligible once the powder is jammed.
+    double tangent_floor_modulus = 5e6;
+  };
+
+  /**
+   * FE2 material point of the tablet model (fem::MaterialModel): each
+   * quadrature point owns a periodic RVE; the symmetric strain increment
+   * of the continuum step strains its cell (H -> (I + deps) H), the
+   * fluctuations are equilibrated with frozen internal variables, and the
+   * point returns the Love-Weber stress and the condensed tangent of that
+   * trial state.
+   *
+   * Commit without a solver hook: the history holds the point's RVE index
+   * and a step counter that each evaluation increments in the trial
+   * history. When an evaluation finds the committed counter one ahead of
+   * the RVE's, the solver has committed the last trial: that trial cell,
+   * with the history update of Eq. (13) applied, becomes the committed
+   * cell. A cut step leaves the counter, and the trial is recomputed from
+   * the committed cell. rotate() (called at commit) rotates the trial cell
+   * rigidly with the stress (objectivity of the updated-Lagrangian scheme).
+   *
+   * Not thread-safe (assembly is serial per MPI rank); the RVEs live with
+   * their rank's quadrature points. Tablet checkpoints do not yet hold the
+   * RVEs.
+   */
+  class RveMaterial : public fem::MaterialModel
+  {
+  public:
+    RveMaterial(RveMaterialSpec spec, dem::ContactModel model);
+
+    std::string
+    name() const override
+    {
+      return "multiscale-fe2";
+    }
+
+    unsigned int
+    n_history() const override
+    {
+      return 16;
+    }
+
+    void
+    initialize(double                    relative_density,
+               dealii::ArrayView<double> history) const override;
+
+    bool
+    evaluate(const fem::MaterialIncrement   &increment,
+             dealii::ArrayView<const double> old_history,
+             dealii::ArrayView<double>       new_history,
+             fem::MaterialResponse          &response) const override;
+
+    dealii::SymmetricTensor<2, 3>
+    stress(dealii::ArrayView<const double> history) const override;
+
+    double
+    relative_density(dealii::ArrayView<const double> history) const override;
+
+    dealii::SymmetricTensor<2, 3>
+    plastic_strain(dealii::ArrayView<const double> history) const override;
+
+    double
+    youngs_modulus(dealii::ArrayView<const double> history) const override;
+
+    void
+    rotate(dealii::ArrayView<double>   history,
+           const dealii::Tensor<2, 3> &R) const override;
+
+    /// Number of material points (RVEs) created so far.
+    std::size_t
+    n_points() const
+    {
+      return committed.size();
+    }
+
+    /// The committed cell of a point (tests, output).
+    const dem::PeriodicBed &
+    committed_cell(std::size_t point) const
+    {
+      return committed[point];
+    }
+
+  private:
+    /// Promotes the last trial of `point` if the solver committed it.
+    void
+    catch_up(std::size_t point, double committed_step) const;
+
+    RveMaterialSpec   spec;
+    dem::ContactModel model;
+    // Mutable: evaluate() is const in the interface, the cells are the
+    // material's own state, indexed by the point's history.
+    mutable std::vector<dem::PeriodicBed> templates;
+    mutable double                        template_density = -1.0;
+    mutable std::vector<dem::PeriodicBed> committed;
+    mutable std::vector<dem::PeriodicBed> trial;
+    mutable std::vector<double>           committed_steps;
+    mutable dem::PeriodicAssembler        assembler;
+    mutable dem::TrustRegionNewton        newton;
+    mutable dem::FireRelaxation           fire;
+    mutable dem::TangentCalculator        tangent;
+  };
+
+  /// The 4th-order tensor of a Voigt matrix with engineering shears
+  /// (C_ijkl = dsigma_ij / deps_kl with minor symmetries).
+  dealii::SymmetricTensor<4, 3>
+  from_voigt(const dem::Matrix6d &C);
+} // namespace compax::coupling
