@@ -6,6 +6,9 @@
 #include "dem/io/particle_vtu.h"
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 
 namespace compax::cli
 {
@@ -32,19 +35,78 @@ namespace compax::cli
   }
 
   void
+  BranchStateWriter::add_snapshot(const std::string &stage, const int branch)
+  {
+    // Time-like key: branch, then the stage within it.
+    const double key = branch
+                       + (stage == "compaction"  ? 0.0
+                          : stage == "unloading" ? 0.3
+                                                 : 0.6);
+    snapshots.emplace_back(key,
+                           "snapshots/" + stage + "-" + std::to_string(branch)
+                             + ".vtu");
+    dem::write_pvd(folder / "particles.pvd", snapshots);
+  }
+
+  int
+  BranchStateWriter::carry_over(const std::filesystem::path &old_folder,
+                                const int                    branches)
+  {
+    namespace fs = std::filesystem;
+    int  missing = 0;
+    auto copy    = [&](const fs::path &relative) {
+      std::error_code error;
+      fs::copy_file(old_folder / relative,
+                    folder / relative,
+                    fs::copy_options::overwrite_existing,
+                    error);
+      if (error)
+        ++missing;
+      return !error;
+    };
+    for (int b = 1; b <= branches; ++b)
+      {
+        for (const char *stage : {"compaction", "unloading", "ejection"})
+          if (copy(fs::path("snapshots")
+                   / (std::string(stage) + "-" + std::to_string(b) + ".vtu")))
+            add_snapshot(stage, b);
+        copy(fs::path("checkpoints") / ("branch-" + std::to_string(b) + ".h5"));
+      }
+    // Rows of the per-branch tables whose first cell (branch) is done.
+    for (auto [name, table] : {std::pair{"fabric.csv", &fabric},
+                               std::pair{"force_histograms.csv", &histograms}})
+      {
+        std::ifstream in(old_folder / name);
+        if (!in)
+          {
+            ++missing;
+            continue;
+          }
+        std::string line;
+        std::getline(in, line); // header
+        while (std::getline(in, line))
+          {
+            if (line.empty() || std::atoi(line.c_str()) > branches)
+              continue;
+            std::istringstream cells(line);
+            for (std::string cell; std::getline(cells, cell, ',');)
+              *table << cell;
+            if (line.back() == ',')
+              table->empty();
+            table->end_row();
+          }
+      }
+    return missing;
+  }
+
+  void
   BranchStateWriter::operator()(const dem::Bed    &bed,
                                 const std::string &stage,
                                 const int          branch)
   {
     const std::string name = stage + "-" + std::to_string(branch);
     dem::write_particles_vtu(folder / "snapshots" / (name + ".vtu"), bed);
-    // Time-like key: branch, then the stage within it.
-    const double key = branch
-                       + (stage == "compaction"  ? 0.0
-                          : stage == "unloading" ? 0.3
-                                                 : 0.6);
-    snapshots.emplace_back(key, "snapshots/" + name + ".vtu");
-    dem::write_pvd(folder / "particles.pvd", snapshots);
+    add_snapshot(stage, branch);
 
     const auto          network = dem::loaded_contacts(bed);
     std::vector<double> magnitude(network.forces.size());

@@ -30,7 +30,19 @@ namespace compax::cli
     void
     operator()(const dem::Bed &bed, const std::string &stage, int branch);
 
+    /**
+     * For a resumed run: takes over what an earlier run wrote in
+     * `old_folder` for branches 1..branches (snapshots, fabric and
+     * histogram rows, branch checkpoints). Missing files are skipped.
+     * @return the number of files or rows that could not be found
+     */
+    int
+    carry_over(const std::filesystem::path &old_folder, int branches);
+
   private:
+    void
+    add_snapshot(const std::string &stage, int branch);
+
     std::filesystem::path                       folder;
     CsvWriter                                   fabric;
     CsvWriter                                   histograms;

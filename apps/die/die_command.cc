@@ -6,14 +6,18 @@
 #include "apps/common/gnuplot.h"
 #include "apps/die/bed_checkpoint.h"
 #include "apps/die/branch_states.h"
+#include "apps/die/die_checkpoint.h"
 #include "apps/die/die_parameters.h"
 #include "apps/die/die_study_fits.h"
 #include "dem/die/die_setup.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <optional>
+#include <sstream>
 #include <stdexcept>
 
 namespace compax::cli
@@ -50,8 +54,12 @@ namespace compax::cli
               << b.elastic_recovery_H << b.residual_radial_pressure
               << b.ejection_pressure << b.coordination_compacted
               << b.bonding_surface_compacted << b.bonding_surface_unloaded
-              << b.bonding_surface_ejected << b.tablet.youngs_modulus
-              << b.tablet.poisson_ratio;
+              << b.bonding_surface_ejected;
+          // Too few points on the unloading curve: not determined.
+          if (b.tablet.n_points >= 2)
+            csv << b.tablet.youngs_modulus << b.tablet.poisson_ratio;
+          else
+            csv.empty().empty();
           csv.end_row();
         }
     }
@@ -103,6 +111,84 @@ namespace compax::cli
                  "die.png");
     }
 
+    /// Gnuplot text of a fitted parameter, or a value that hides the curve.
+    template <typename T>
+    std::string
+    value(const std::optional<T> &fit, double T::*member)
+    {
+      std::ostringstream s;
+      s.precision(12);
+      if (fit && std::isfinite((*fit).*member))
+        s << (*fit).*member;
+      else
+        s << "NaN";
+      return s.str();
+    }
+
+    /**
+     * branches.png: the results per unloading branch against their fits
+     * (Gonzalez 2018 Secs. 5.3-5.7): elastic recovery eps_rho and residual
+     * radial pressure against rho_max (Eqs. 17, 19), the bonding surface
+     * after unloading and the tablet's Young's modulus against rho_min
+     * (Eqs. 23, 24). Curves without a fit are left out.
+     */
+    void
+    plot_branches(const std::filesystem::path &folder,
+                  const CompactionFits        &fits)
+    {
+      using L = dem::LinearCriticalFit;
+      using N = dem::PhaniNiyogiFit;
+      std::ostringstream s;
+      s << "set datafile columnheaders\nset datafile separator ','\n"
+        << "e0 = " << value(fits.elastic_recovery, &L::y_0)
+        << "; rce = " << value(fits.elastic_recovery, &L::rho_c) << "\n"
+        << "s0 = " << value(fits.residual_pressure, &L::y_0)
+        << "; rcs = " << value(fits.residual_pressure, &L::rho_c) << "\n"
+        << "a0 = " << value(fits.bonding_surface, &L::y_0)
+        << "; rcb = " << value(fits.bonding_surface, &L::rho_c) << "\n"
+        << "E0 = " << value(fits.youngs_modulus, &N::E_0)
+        << "; nE = " << value(fits.youngs_modulus, &N::n)
+        << "; rcE = " << value(fits.youngs_modulus, &N::rho_c) << "\n"
+        << "eps(x) = e0 * (x - rce) / (1 - rce)\n"
+        << "sres(x) = s0 * x * (x - rcs) / (1 - rcs) / 1e6\n"
+        << "ab(x) = a0 * (x - rcb) / (1 - rcb)\n"
+        << "emod(x) = x > rcE ? E0 * ((x - rcE) / (1 - rcE))**nE / 1e9 : "
+           "1/0\n"
+        << "set samples 300\nset key top left\n"
+        << "set multiplot layout 2,2\n"
+        << "set xlabel 'rho_{max} (in-die) [-]'\n"
+        << "set ylabel 'elastic recovery {/Symbol e}_{/Symbol r} [%]'\n"
+        << "plot 'branches.csv' using 'rho_max_in_die':"
+           "(100*column('elastic_recovery_rho')) with points pt 7 "
+           "title 'simulation'"
+        << (fits.elastic_recovery
+              ? ", 100*eps(x) with lines dt 2 lw 2 title 'Eq. (17) fit'"
+              : "")
+        << "\nset ylabel 'residual radial pressure [MPa]'\n"
+        << "plot 'branches.csv' using 'rho_max_in_die':"
+           "(column('residual_radial_pressure')/1e6) with points pt 7 "
+           "title 'simulation'"
+        << (fits.residual_pressure
+              ? ", sres(x) with lines dt 2 lw 2 title 'Eq. (19) fit'"
+              : "")
+        << "\nset xlabel 'rho_{min} (in-die, unloaded) [-]'\n"
+        << "set ylabel 'bonding surface A_b [-]'\n"
+        << "plot 'branches.csv' using 'rho_min_in_die':"
+           "'bonding_surface_unloaded' with points pt 7 title 'simulation'"
+        << (fits.bonding_surface
+              ? ", ab(x) with lines dt 2 lw 2 title 'Eq. (23) fit'"
+              : "")
+        << "\nset ylabel 'tablet Young''s modulus [GPa]'\n"
+        << "plot 'branches.csv' using 'rho_min_in_die':"
+           "(column('tablet_youngs_modulus')/1e9) with points pt 7 "
+           "title 'simulation'"
+        << (fits.youngs_modulus
+              ? ", emod(x) with lines dt 2 lw 2 title 'Eq. (24) fit'"
+              : "")
+        << "\nunset multiplot\n";
+      render_png(folder, "branches.gp", s.str(), "branches.png");
+    }
+
     /// The bed saved in checkpoints/branch-<k>.h5, and k.
     dem::Bed
     load_branch_checkpoint(const std::string       &file,
@@ -127,6 +213,22 @@ namespace compax::cli
                        std::string("not a compax die checkpoint (") + e.what()
                          + ")");
         }
+    }
+
+    /// Prints how many particles of each material the bed has.
+    void
+    report_materials(const dem::Bed &bed, const dem::ContactModel &model)
+    {
+      if (model.n_materials() < 2)
+        return;
+      std::vector<std::size_t> count(model.n_materials(), 0);
+      for (const unsigned int m : bed.particles.materials)
+        if (m < count.size())
+          ++count[m];
+      std::cout << "  particles per material:";
+      for (std::size_t a = 0; a < count.size(); ++a)
+        std::cout << (a ? ", " : " ") << count[a] << " of material " << a + 1;
+      std::cout << std::endl;
     }
 
     class DieCommand : public Command
@@ -160,7 +262,17 @@ namespace compax::cli
                "recovery, residual radial and ejection pressure, solver "
                "iterations and residual), branches.csv (one row per "
                "unloading branch, with the tablet's E and nu), fits.csv and "
-               "fits.md (Eqs. 14-24 fitted to the study), die.png.\n\n"
+               "fits.md (Eqs. 14-24 fitted to the study), die.png (punch and "
+               "die-wall pressure and Z with the fits of Eqs. 14-15), "
+               "branches.png (elastic recovery, residual radial pressure, "
+               "bonding surface and tablet E with Eqs. 17, 19, 23, 24), VTU "
+               "snapshots, fabric and force histograms, and checkpoints: "
+               "checkpoints/branch-<k>.h5 (Protocol/Rerun branch from) and "
+               "checkpoints/compaction.h5 every Protocol/Checkpoint interval "
+               "steps (Protocol/Resume from continues an interrupted run; "
+               "while running, the output is staged in .<OUTDIR>.partial-<pid> "
+               "next to OUTDIR). Two particle species: Material 2 and "
+               "Packing/Material fractions.\n\n"
                "Built-in default: Material 1 of Gonzalez 2018 Table 1 "
                "(R = 220 um), 400 particles in a 4 mm die, compacted to an "
                "in-die relative density of 0.87, with unloading branches (and "
@@ -189,7 +301,45 @@ namespace compax::cli
         const auto started      = std::chrono::steady_clock::now();
         int        rerun_branch = 0;
         dem::Bed   bed;
-        if (!study.rerun_branch_from.empty())
+        std::optional<dem::DieProgress> resumed;
+        if (!study.resume_from.empty())
+          {
+            try
+              {
+                resumed
+                  = read_die_checkpoint(study.resume_from, study.model, bed);
+              }
+            catch (const std::exception &e)
+              {
+                reject_entry("Protocol/Resume from",
+                             study.resume_from,
+                             std::string("not a compax die compaction "
+                                         "checkpoint (")
+                               + e.what() + ")");
+              }
+            const int stop = study.protocol.stop_after;
+            if (stop > 0 && std::size_t(stop) <= resumed->completed_targets)
+              reject_entry("Protocol/Stop after compaction steps",
+                           std::to_string(stop),
+                           "counts from the start of the study and must "
+                           "exceed the "
+                             + std::to_string(resumed->completed_targets)
+                             + " steps the checkpoint has done (or be 0)");
+            const double rho_0 = resumed->rows.front().relative_density;
+            if (study.final_density <= rho_0)
+              reject_entry("Protocol/Final relative density",
+                           format_number(study.final_density),
+                           "must exceed the packing's relative density "
+                             + format_number(rho_0));
+            study.protocol.compaction_targets
+              = dem::density_targets(rho_0,
+                                     study.final_density,
+                                     study.compaction_steps);
+            std::cout << "Resuming from " << study.resume_from
+                      << " (in-die relative density " << bed.relative_density()
+                      << ")" << std::endl;
+          }
+        else if (!study.rerun_branch_from.empty())
           {
             bed = load_branch_checkpoint(study.rerun_branch_from,
                                          study.model,
@@ -219,6 +369,7 @@ namespace compax::cli
                                      study.final_density,
                                      study.compaction_steps);
           }
+        report_materials(bed, study.model);
 
         std::ofstream      csv(folder / "die.csv");
         dem::DieCompaction die(std::move(bed),
@@ -232,13 +383,39 @@ namespace compax::cli
                                                int                branch) {
           branch_states(state, stage, branch);
         };
+        const auto checkpoint = folder / "checkpoints" / "compaction.h5";
+        die.on_checkpoint
+          = [&checkpoint](const dem::Bed &state, const dem::DieProgress &p) {
+              write_die_checkpoint(checkpoint.string(), state, p);
+            };
+        if (resumed)
+          {
+            const std::string mismatch = die.resume_mismatch(*resumed);
+            if (!mismatch.empty())
+              reject_entry("Protocol/Resume from", study.resume_from, mismatch);
+            const auto old_folder = std::filesystem::absolute(study.resume_from)
+                                      .parent_path()
+                                      .parent_path();
+            if (branch_states.carry_over(old_folder, resumed->branches_run) > 0)
+              std::cout << "  note: some snapshots, fabric or histogram rows "
+                           "of the earlier branches were not found next to "
+                           "the checkpoint (in "
+                        << old_folder.string() << ")" << std::endl;
+          }
         int code = success;
         try
           {
             if (rerun_branch > 0)
               die.rerun_branch(rerun_branch);
+            else if (resumed)
+              die.resume(*resumed);
             else
               die.run();
+            if (die.stopped())
+              std::cout << "Stopped as asked; continue with\n  set Resume "
+                           "from = <OUTDIR>/checkpoints/compaction.h5\nin "
+                           "subsection Protocol."
+                        << std::endl;
           }
         catch (const std::runtime_error &e)
           {
@@ -256,7 +433,11 @@ namespace compax::cli
         csv.close();
 
         write_branches(folder / "branches.csv", die.branches());
-        plot(folder, write_die_fits(folder, die.records(), die.branches()));
+        const CompactionFits fits
+          = write_die_fits(folder, die.records(), die.branches());
+        plot(folder, fits);
+        if (!die.branches().empty())
+          plot_branches(folder, fits);
 
         const double seconds = std::chrono::duration<double>(
                                  std::chrono::steady_clock::now() - started)

@@ -4,16 +4,33 @@
 #include "apps/common/material_parameters.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
 namespace compax::cli
 {
+  namespace
+  {
+    /// Material 2 of Gonzalez 2018, Table 1 (R = 220 um).
+    constexpr ParticleDefaults material_2_defaults{220e-6,
+                                                   30e9,
+                                                   0.25,
+                                                   900e6,
+                                                   2.0,
+                                                   600.0};
+  } // namespace
+
   void
   declare_die_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
     declare_particle_material(prm, material_1);
+    prm.leave_subsection();
+    // A second species, used when Packing/Material fractions lists two
+    // fractions (defaults: Material 2 of Gonzalez 2018, Table 1).
+    prm.enter_subsection("Material 2");
+    declare_particle_material(prm, material_2_defaults);
     prm.leave_subsection();
 
     prm.enter_subsection("Bonding");
@@ -30,7 +47,25 @@ namespace compax::cli
                      "Pa m^1/2",
                      "Fracture toughness K_Ic of the solid bridges between "
                      "particles (Material 1 of Gonzalez 2018, Table 1); 0 "
-                     "for no bonding.");
+                     "for no bonding. With two materials: between two "
+                     "particles of Material.");
+    declare_quantity(prm,
+                     "Fracture toughness 2",
+                     "6.19e6",
+                     non_negative(),
+                     "Pa m^1/2",
+                     "K_Ic of bridges between two particles of Material 2 "
+                     "(used with two materials; Material 2 of Gonzalez 2018, "
+                     "Table 1).");
+    declare_quantity(prm,
+                     "Cross fracture toughness",
+                     "2.62e6",
+                     non_negative(),
+                     "Pa m^1/2",
+                     "K_Ic of bridges between a particle of Material and one "
+                     "of Material 2 (used with two materials). The default is "
+                     "the formula after Gonzalez 2018 Eq. 5 with the surface "
+                     "energies of Materials 1 and 2 of Table 1.");
     declare_quantity(prm,
                      "Plastic dissipation",
                      "0",
@@ -83,6 +118,18 @@ namespace compax::cli
                      positive(),
                      "m",
                      "Upper cut-off of the log-normal distribution.");
+    declare_quantity(prm,
+                     "Material fractions",
+                     "1",
+                     dealii::Patterns::List(dealii::Patterns::Double(0, 1),
+                                            1,
+                                            2),
+                     "-",
+                     "Number fractions of the particle species, summing to "
+                     "1: one value (Material only) or two (Material, "
+                     "Material 2; each particle draws its species at "
+                     "random with these probabilities). Both species must "
+                     "have the same Radius (one size distribution).");
     prm.declare_entry("Seed",
                       "1",
                       dealii::Patterns::Integer(0),
@@ -119,6 +166,14 @@ namespace compax::cli
                      "-",
                      "Upper-punch withdrawal per unloading step as a "
                      "fraction of the punch gap at the unloading point.");
+    prm.declare_entry("Minimum unloading steps",
+                      "12",
+                      dealii::Patterns::Integer(1, 100000),
+                      "After the first unloading step the step is reduced, "
+                      "if needed, so that the punch comes free in about this "
+                      "many steps (extrapolated with the first step's "
+                      "stiffness): the tablet's E and nu come from the "
+                      "central third of the unloading curve. In [1, 100000].");
     prm.declare_entry("Eject",
                       "true",
                       dealii::Patterns::Bool(),
@@ -147,6 +202,40 @@ namespace compax::cli
                       "and ejection) from the saved state, with this file's "
                       "other protocol and solver settings. Empty: run the "
                       "whole study.");
+    prm.declare_entry("Checkpoint interval",
+                      "10",
+                      dealii::Patterns::Integer(0, 100000),
+                      "Write checkpoints/compaction.h5 (bed, die.csv rows and "
+                      "branches so far) every this many compaction steps, "
+                      "replacing the previous one atomically; 0: never. While "
+                      "a run is in progress its output is staged in the "
+                      "hidden folder .<OUTDIR>.partial-<pid> next to OUTDIR: "
+                      "after a kill the checkpoint is there; after a stop "
+                      "(exit 3 or Stop after compaction steps) it is in "
+                      "OUTDIR/checkpoints. In [0, 100000].");
+    prm.declare_entry("Stop after compaction steps",
+                      "0",
+                      dealii::Patterns::Integer(0, 100000),
+                      "Stop after this many compaction steps (their "
+                      "unloading branches included) with a checkpoint, and "
+                      "publish the output so far, e.g. to split a long study "
+                      "over several jobs; 0: run to the end. Counted from "
+                      "the start of the study (also when resuming). A resumed "
+                      "run equals the uninterrupted one exactly when it "
+                      "stopped at a multiple of the Checkpoint interval.");
+    prm.declare_entry("Resume from",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "A checkpoints/compaction.h5 written by an interrupted "
+                      "or stopped run with the same Material, Bonding, "
+                      "Packing and Solver: continue that run where the "
+                      "checkpoint was taken, skipping packing and the "
+                      "compaction done (die.csv and branches.csv get the "
+                      "earlier rows too; snapshots, fabric, histograms and "
+                      "branch checkpoints of earlier branches are copied "
+                      "from the checkpoint's run folder). Final relative "
+                      "density may be raised; the targets done must be "
+                      "unchanged. Empty: start afresh.");
     prm.declare_entry("Maximum ejection steps",
                       "40",
                       dealii::Patterns::Integer(1, 100000),
@@ -180,23 +269,65 @@ namespace compax::cli
   DieStudy
   get_die_study(dealii::ParameterHandler &prm)
   {
-    prm.enter_subsection("Material");
-    const dem::ElastoplasticMaterial material = get_particle_material(prm);
-    const double                     radius   = get_particle_radius(prm);
-    const double                     omega    = get_surface_energy(prm);
+    prm.enter_subsection("Packing");
+    std::vector<double> fractions = get_real_list(prm, "Material fractions");
     prm.leave_subsection();
+    {
+      double sum = 0.0;
+      for (const double f : fractions)
+        sum += f;
+      std::ostringstream list;
+      for (std::size_t k = 0; k < fractions.size(); ++k)
+        list << (k ? ", " : "") << format_number(fractions[k]);
+      if (std::abs(sum - 1.0) > 1e-9)
+        reject_entry("Packing/Material fractions",
+                     list.str(),
+                     "the number fractions must sum to 1 (they sum to "
+                       + format_number(sum) + ")");
+    }
+    const std::size_t n_materials = fractions.size();
+
+    std::vector<dem::ElastoplasticMaterial> materials;
+    std::vector<double>                     omegas;
+    double                                  radius = 0.0;
+    for (std::size_t a = 0; a < n_materials; ++a)
+      {
+        const std::string name = a == 0 ? "Material" : "Material 2";
+        prm.enter_subsection(name);
+        materials.push_back(get_particle_material(prm));
+        omegas.push_back(get_surface_energy(prm));
+        const double R = get_particle_radius(prm);
+        prm.leave_subsection();
+        if (a == 0)
+          radius = R;
+        else if (R != radius)
+          reject_entry(name + "/Radius",
+                       format_number(R),
+                       "must equal Material/Radius = " + format_number(radius)
+                         + " m: the packing draws every radius from one "
+                           "size distribution");
+      }
 
     prm.enter_subsection("Bonding");
-    double toughness = prm.get_double("Fracture toughness");
-    if (prm.get_bool("Fracture toughness from energies"))
-      toughness
-        = dem::fracture_toughness_from_energies(material,
-                                                omega,
-                                                material,
-                                                omega,
-                                                prm.get_double(
-                                                  "Plastic dissipation"));
-    dem::ContactModel model(material,
+    const double G_p = prm.get_double("Plastic dissipation");
+    std::vector<std::vector<double>> toughness(n_materials,
+                                               std::vector<double>(n_materials,
+                                                                   0.0));
+    const bool from_energies = prm.get_bool("Fracture toughness from energies");
+    for (std::size_t a = 0; a < n_materials; ++a)
+      for (std::size_t b = a; b < n_materials; ++b)
+        {
+          double K;
+          if (from_energies)
+            K = dem::fracture_toughness_from_energies(
+              materials[a], omegas[a], materials[b], omegas[b], G_p);
+          else
+            K = prm.get_double(a != b   ? "Cross fracture toughness"
+                               : a == 0 ? "Fracture toughness"
+                                        : "Fracture toughness 2");
+          toughness[a][b] = toughness[b][a] = K;
+        }
+    dem::ContactModel model(materials,
                             toughness,
                             prm.get_double("Regularization parameter"));
     model.wall_bonding = prm.get_bool("Bridges with walls");
@@ -211,6 +342,9 @@ namespace compax::cli
     deposition.sizes.min_radius    = prm.get_double("Minimum radius");
     deposition.sizes.max_radius    = prm.get_double("Maximum radius");
     deposition.seed = static_cast<std::uint64_t>(prm.get_integer("Seed"));
+    // One species draws no material numbers (same packing as before).
+    if (n_materials > 1)
+      deposition.material_fractions = fractions;
     if (deposition.die_diameter <= 4 * radius)
       reject_entry("Packing/Die diameter",
                    format_number(deposition.die_diameter),
@@ -237,8 +371,9 @@ namespace compax::cli
                      "each unloading point must lie in (0, Final relative "
                      "density = "
                        + format_number(final_density) + "]");
-    protocol.unloading_step = prm.get_double("Unloading step");
-    protocol.eject          = prm.get_bool("Eject");
+    protocol.unloading_step      = prm.get_double("Unloading step");
+    protocol.min_unloading_steps = prm.get_integer("Minimum unloading steps");
+    protocol.eject               = prm.get_bool("Eject");
     protocol.friction_coefficient
       = prm.get_double("Die-wall friction coefficient");
     protocol.ejection_step      = prm.get_double("Ejection step");
@@ -247,6 +382,15 @@ namespace compax::cli
       reject_entry("Protocol/Rerun branch from",
                    rerun,
                    "no such checkpoint file");
+    protocol.checkpoint_interval = prm.get_integer("Checkpoint interval");
+    protocol.stop_after      = prm.get_integer("Stop after compaction steps");
+    const std::string resume = prm.get("Resume from");
+    if (!resume.empty() && !std::filesystem::is_regular_file(resume))
+      reject_entry("Protocol/Resume from", resume, "no such checkpoint file");
+    if (!resume.empty() && !rerun.empty())
+      reject_entry("Protocol/Resume from",
+                   resume,
+                   "cannot be combined with Rerun branch from");
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
@@ -256,7 +400,13 @@ namespace compax::cli
     equilibrium.max_iterations  = prm.get_integer("Maximum iterations");
     prm.leave_subsection();
 
-    return {
-      deposition, model, protocol, equilibrium, final_density, steps, rerun};
+    return {deposition,
+            model,
+            protocol,
+            equilibrium,
+            final_density,
+            steps,
+            rerun,
+            resume};
   }
 } // namespace compax::cli

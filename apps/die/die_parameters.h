@@ -22,9 +22,13 @@ namespace compax::cli
     /// A branch checkpoint (checkpoints/branch-<k>.h5) to rerun that
     /// unloading branch from, instead of the whole study; empty: none.
     std::string rerun_branch_from;
+    /// A compaction checkpoint (checkpoints/compaction.h5) to resume an
+    /// interrupted run from; empty: none.
+    std::string resume_from;
   };
 
-  /// Declares the subsections Material, Bonding, Packing, Protocol, Solver.
+  /// Declares the subsections Material, Material 2, Bonding, Packing,
+  /// Protocol, Solver.
   void
   declare_die_parameters(dealii::ParameterHandler &prm);
 

@@ -59,14 +59,17 @@ namespace compax::cli
     // The jammed part of the compaction path.
     std::vector<double> rho, Z, pressure;
     for (const auto &r : records)
-      if (r.stage == "compaction" && r.coordination_number > 0
-          && r.upper_punch_pressure > 0)
+      if (r.stage == "compaction" && r.step > 0 && r.coordination_number > 0
+          && r.upper_punch_pressure > 0) // step 0: the loose deposit
         {
           rho.push_back(r.relative_density);
           Z.push_back(r.coordination_number);
           pressure.push_back(r.upper_punch_pressure);
         }
-    std::vector<double> rho_max, rho_min, recovery, residual, bonding, E, nu;
+    std::vector<double> rho_max, rho_min, recovery, residual, bonding;
+    // E and nu only where the unloading curve gave them (two or more
+    // points in its central third).
+    std::vector<double> rho_min_E, E, nu;
     for (const auto &b : branches)
       {
         rho_max.push_back(b.rho_max_in_die);
@@ -74,8 +77,12 @@ namespace compax::cli
         recovery.push_back(b.elastic_recovery_rho);
         residual.push_back(b.residual_radial_pressure);
         bonding.push_back(b.bonding_surface_unloaded);
-        E.push_back(b.tablet.youngs_modulus);
-        nu.push_back(b.tablet.poisson_ratio);
+        if (b.tablet.n_points >= 2)
+          {
+            rho_min_E.push_back(b.rho_min_in_die);
+            E.push_back(b.tablet.youngs_modulus);
+            nu.push_back(b.tablet.poisson_ratio);
+          }
       }
 
     const auto coordination
@@ -96,7 +103,7 @@ namespace compax::cli
     const auto bond
       = try_fit(&dem::fit_linear_critical, rho_min, bonding, std::size_t(2));
     const auto modulus
-      = try_fit(&dem::fit_phani_niyogi, rho_min, E, std::size_t(3));
+      = try_fit(&dem::fit_phani_niyogi, rho_min_E, E, std::size_t(3));
     std::optional<double> nu_mean;
     if (!nu.empty())
       {
@@ -129,9 +136,9 @@ namespace compax::cli
       {"rho_c_e", e19, field(res, &L::rho_c), rho_max.size()},
       {"A_b0", e23, field(bond, &L::y_0), rho_min.size()},
       {"rho_c_b", e23, field(bond, &L::rho_c), rho_min.size()},
-      {"E_0", e24, field(modulus, &N::E_0), rho_min.size()},
-      {"n", e24, field(modulus, &N::n), rho_min.size()},
-      {"rho_c_E", e24, field(modulus, &N::rho_c), rho_min.size()},
+      {"E_0", e24, field(modulus, &N::E_0), rho_min_E.size()},
+      {"n", e24, field(modulus, &N::n), rho_min_E.size()},
+      {"rho_c_E", e24, field(modulus, &N::rho_c), rho_min_E.size()},
       {"nu_tablet", "Sec. 5.7, mean over branches", nu_mean, nu.size()}};
 
     std::ofstream csv(folder / "fits.csv");
@@ -158,6 +165,6 @@ namespace compax::cli
     md << "\nSI units (K_p, sigma_res_0, E_0 in Pa). Fits need at least 5 "
           "jammed compaction steps (Eqs. 14-15), 2 unloading branches "
           "(Eqs. 17, 19, 23) and 3 branches (Eq. 24).\n";
-    return {coordination, punch};
+    return {coordination, punch, eps, res, bond, modulus};
   }
 } // namespace compax::cli

@@ -26,11 +26,20 @@ namespace compax::cli
    * - Eq. (24) E = E_0 ((rho_min - rho_c_E)/(1 - rho_c_E))^n;
    * - nu_tablet, the mean Poisson's ratio of the branches (Sec. 5.7).
    */
-  /// The fits of the compaction path, for plotting beside the data.
+  /// The fits of the study, for plotting beside the data (empty where
+  /// not determined).
   struct CompactionFits
   {
     std::optional<dem::CoordinationFit>  coordination;
     std::optional<dem::PunchPressureFit> punch_pressure;
+    /// Eq. (17): elastic recovery eps_rho against rho_max.
+    std::optional<dem::LinearCriticalFit> elastic_recovery;
+    /// Eq. (19): residual radial pressure against rho_max.
+    std::optional<dem::LinearCriticalFit> residual_pressure;
+    /// Eq. (23): bonding surface after unloading against rho_min.
+    std::optional<dem::LinearCriticalFit> bonding_surface;
+    /// Eq. (24): tablet Young's modulus against rho_min.
+    std::optional<dem::PhaniNiyogiFit> youngs_modulus;
   };
 
   CompactionFits

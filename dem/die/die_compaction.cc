@@ -83,7 +83,8 @@ namespace compax::dem
       : path(std::move(bed))
       , model(model)
       , protocol(std::move(protocol_))
-      , stepper(model, equilibrium)
+      , equilibrium(equilibrium)
+      , stepper(std::make_unique<LoadStepper>(model, equilibrium))
   {
     auto &t = protocol.compaction_targets;
     t.insert(t.end(),
@@ -198,12 +199,20 @@ namespace compax::dem
     r0.rho_max_in_die = r0.relative_density;
     emit(r0, path);
     failure_message.clear();
+    completed     = 0;
+    n_branches    = 0;
+    stopped_early = false;
     if (protocol.consolidate)
       consolidate();
 
+    compact_from(0);
+  }
+
+  void
+  DieCompaction::compact_from(const std::size_t first)
+  {
     const auto &targets = protocol.compaction_targets;
-    int         branch  = 0;
-    for (std::size_t k = 0; k < targets.size(); ++k)
+    for (std::size_t k = first; k < targets.size(); ++k)
       {
         if (targets[k] <= path.relative_density() * (1 + 1e-12))
           {
@@ -213,15 +222,118 @@ namespace compax::dem
                           << " lies below the jamming density "
                           << path.relative_density() << ": skipped"
                           << std::endl;
-            continue;
           }
-        compact_to(targets[k],
-                   static_cast<int>(k + 1),
-                   static_cast<int>(targets.size()));
-        for (const double u : protocol.unloading_points)
-          if (std::abs(u - targets[k]) < 1e-12)
-            unloading_branch(++branch);
+        else
+          {
+            compact_to(targets[k],
+                       static_cast<int>(k + 1),
+                       static_cast<int>(targets.size()));
+            for (const double u : protocol.unloading_points)
+              if (std::abs(u - targets[k]) < 1e-12)
+                unloading_branch(++n_branches);
+          }
+        completed       = k + 1;
+        const bool last = completed == targets.size();
+        const bool stop = !last && protocol.stop_after > 0
+                          && completed >= std::size_t(protocol.stop_after);
+        const bool due = protocol.checkpoint_interval > 0
+                         && completed % protocol.checkpoint_interval == 0;
+        if (!last && (due || stop))
+          {
+            if (on_checkpoint)
+              on_checkpoint(path, progress_state());
+            // The next step starts as a resumed run does: no secant
+            // predictor, no cut-back memory.
+            stepper = std::make_unique<LoadStepper>(model, equilibrium);
+            if (progress)
+              *progress << "checkpoint after " << completed << " of "
+                        << targets.size() << " compaction targets" << std::endl;
+          }
+        if (stop)
+          {
+            stopped_early = true;
+            if (progress)
+              *progress << "stopping after " << completed
+                        << " compaction targets as asked" << std::endl;
+            return;
+          }
       }
+  }
+
+  DieProgress
+  DieCompaction::progress_state() const
+  {
+    DieProgress p;
+    p.compaction_targets = protocol.compaction_targets;
+    p.completed_targets  = completed;
+    p.branches_run       = n_branches;
+    p.jamming_density    = rho_jammed;
+    p.rows               = rows;
+    p.branches           = summaries;
+    p.newton_iterations  = newton_iterations;
+    p.cg_iterations      = cg_iterations;
+    p.assemblies         = assemblies;
+    p.fire_iterations    = fire_iterations;
+    return p;
+  }
+
+  std::string
+  DieCompaction::resume_mismatch(const DieProgress &from) const
+  {
+    const auto &targets = protocol.compaction_targets;
+    if (from.completed_targets > from.compaction_targets.size()
+        || from.completed_targets > targets.size())
+      return "the checkpoint has more completed compaction targets than "
+             "this run has";
+    if (from.rows.empty())
+      return "the checkpoint has no rows";
+    for (std::size_t k = 0; k < from.completed_targets; ++k)
+      if (std::abs(targets[k] - from.compaction_targets[k])
+          > 1e-12 * targets[k])
+        {
+          std::ostringstream s;
+          s << "compaction target " << k + 1 << " is " << std::setprecision(12)
+            << targets[k] << " here but was " << from.compaction_targets[k]
+            << " in the checkpointed run (same packing, final density, "
+               "compaction steps and unloading points up to the checkpoint "
+               "are needed)";
+          return s.str();
+        }
+    return {};
+  }
+
+  void
+  DieCompaction::resume(const DieProgress &from)
+  {
+    const auto       &targets  = protocol.compaction_targets;
+    const std::string mismatch = resume_mismatch(from);
+    if (!mismatch.empty())
+      throw std::invalid_argument("die protocol: " + mismatch);
+    failure_message.clear();
+    rows              = from.rows;
+    summaries         = from.branches;
+    completed         = from.completed_targets;
+    n_branches        = from.branches_run;
+    rho_jammed        = from.jamming_density;
+    newton_iterations = from.newton_iterations;
+    cg_iterations     = from.cg_iterations;
+    assemblies        = from.assemblies;
+    fire_iterations   = from.fire_iterations;
+    last_good         = path;
+    start_time        = now() - (rows.empty() ? 0.0 : rows.back().wall_seconds);
+    if (csv)
+      {
+        write_csv_header(*csv);
+        for (const auto &r : rows)
+          write_csv_row(*csv, r);
+        csv->flush();
+      }
+    if (progress)
+      *progress << "resuming after " << completed << " of " << targets.size()
+                << " compaction targets (in-die relative density "
+                << path.relative_density() << ", " << n_branches
+                << " unloading branches done)" << std::endl;
+    compact_from(completed);
   }
 
   void
@@ -231,7 +343,7 @@ namespace compax::dem
     if (csv)
       write_csv_header(*csv);
     failure_message.clear();
-    const LoadStepResult r = stepper.equilibrate(path);
+    const LoadStepResult r = stepper->equilibrate(path);
     check(r, "re-equilibrating the saved compaction state");
     DieRecord d      = record(path, "compaction", 0, 0, r);
     d.rho_max_in_die = d.relative_density;
@@ -275,7 +387,7 @@ namespace compax::dem
     DieWalls target         = path.walls;
     target.upper_punch      = path.walls.lower_punch + gap_for(path, rho);
     const double         t0 = now();
-    const LoadStepResult r  = stepper.advance(path, target);
+    const LoadStepResult r  = stepper->advance(path, target);
     std::ostringstream   what;
     what << "compaction to relative density " << rho;
     check(r, what.str());
@@ -316,11 +428,12 @@ namespace compax::dem
     double    F_prev = rows.back().upper_punch_force, H_prev = H_max;
     double    H_min = H_max;
     DieRecord last;
+    double    dH = protocol.unloading_step * H_max;
     for (int step = 1;; ++step)
       {
         DieWalls w = bed.walls;
-        w.upper_punch += protocol.unloading_step * H_max;
-        const LoadStepResult r = stepper.advance(bed, w);
+        w.upper_punch += dH;
+        const LoadStepResult r = stepper->advance(bed, w);
         check(r, "unloading");
         DieRecord d      = record(bed, "unloading", branch, step, r);
         d.rho_max_in_die = s.rho_max_in_die;
@@ -357,6 +470,14 @@ namespace compax::dem
                     << d.upper_punch_force << " it " << r.iterations << " cg "
                     << r.cg_iterations << " fire " << r.fire_iterations
                     << std::endl;
+        if (step == 1 && F_prev > d.upper_punch_force
+            && protocol.min_unloading_steps > 1)
+          {
+            // Secant stiffness of the first step: the force vanishes about
+            // F / k further on.
+            const double k = (F_prev - d.upper_punch_force) / (H - H_prev);
+            dH = std::min(dH, F_prev / k / protocol.min_unloading_steps);
+          }
         F_prev = d.upper_punch_force;
         H_prev = H;
       }
@@ -409,7 +530,7 @@ namespace compax::dem
           w.die_present = false;
         else
           w.diameter = D0 * (1.0 + protocol.ejection_step * step);
-        const LoadStepResult r = stepper.advance(bed, w);
+        const LoadStepResult r = stepper->advance(bed, w);
         check(r, "ejection");
         DieRecord d                = record(bed, "ejection", branch, step, r);
         d.rho_max_in_die           = s.rho_max_in_die;
@@ -430,7 +551,7 @@ namespace compax::dem
           {
             // The tablet left the wall: remove it.
             w.die_present           = false;
-            const LoadStepResult rf = stepper.advance(bed, w);
+            const LoadStepResult rf = stepper->advance(bed, w);
             check(rf, "ejection");
             DieRecord f      = record(bed, "ejection", branch, step + 1, rf);
             f.rho_max_in_die = s.rho_max_in_die;

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,12 @@ namespace compax::dem
     /// Upper-punch withdrawal per unloading step as a fraction of the
     /// punch gap at the unloading point [-].
     double unloading_step = 2e-3;
+    /// Smallest number of unloading steps aimed at per branch, so that the
+    /// central third of the unloading curve has points for the tablet's E
+    /// and nu (Sec. 5.7): after the first step, the step is reduced to the
+    /// gap at which the punch force would vanish, extrapolated with that
+    /// step's secant stiffness, divided by this number.
+    int min_unloading_steps = 12;
     /// Die-wall friction coefficient mu of the ejection pressure [-].
     double friction_coefficient = 1.0;
     /// Die-radius increase per ejection step as a fraction of D/2 [-].
@@ -41,6 +48,13 @@ namespace compax::dem
     ConsolidationOptions consolidation;
     /// Also write a progress line per unloading and ejection step.
     bool verbose = false;
+    /// Hand a checkpoint (DieCompaction::on_checkpoint) every this many
+    /// compaction targets, after the target's unloading branch if it has
+    /// one; 0: never.
+    int checkpoint_interval = 0;
+    /// Stop after this many compaction targets (with a checkpoint), e.g.
+    /// to split a long study over several jobs; 0: run to the end.
+    int stop_after = 0;
   };
 
   /// One row of die.csv: the state after a converged load step.
@@ -97,6 +111,28 @@ namespace compax::dem
   };
 
   /**
+   * Where a die protocol stands after a number of compaction targets: what
+   * a checkpoint holds besides the bed on the compaction path, and what
+   * DieCompaction::resume() continues from.
+   */
+  struct DieProgress
+  {
+    /// The compaction targets (unloading points merged in) of the run [-].
+    std::vector<double> compaction_targets;
+    /// How many of them are done (their branches included).
+    std::size_t completed_targets = 0;
+    /// Unloading branches run so far.
+    int branches_run = 0;
+    /// See DieCompaction::jamming_density() [-].
+    double                     jamming_density = 0.0;
+    std::vector<DieRecord>     rows;
+    std::vector<BranchSummary> branches;
+    /// Solver totals so far (performance reports).
+    long newton_iterations = 0, cg_iterations = 0, assemblies = 0,
+         fire_iterations = 0;
+  };
+
+  /**
    * Die compaction, unloading and ejection of a bed (Gonzalez 2018,
    * Sec. 5, Fig. 2): the upper punch moves down through the target
    * densities; at every unloading point the state is saved and an
@@ -128,6 +164,16 @@ namespace compax::dem
       on_branch_state;
 
     /**
+     * Called every protocol.checkpoint_interval compaction targets with
+     * the bed on the compaction path and the progress so far: together
+     * they are what resume() needs. The load stepper starts afresh after
+     * each checkpoint (no secant predictor, full sub-step), so a run
+     * resumed from it retraces the uninterrupted run exactly.
+     */
+    std::function<void(const Bed &bed, const DieProgress &progress)>
+      on_checkpoint;
+
+    /**
      * Runs the whole protocol. If a load step cannot converge after all
      * cut-backs, it throws std::runtime_error; failed(), failure() and
      * last_converged() then describe where it stopped, and records()
@@ -145,6 +191,40 @@ namespace compax::dem
      */
     void
     rerun_branch(int branch);
+
+    /**
+     * Continues an interrupted run() from a checkpoint: the bed this object
+     * was built with is the compaction path after
+     * from.completed_targets targets; the rows and branches so far are
+     * taken over (and written to the CSV first), then the remaining
+     * targets run as run() would. The object's compaction targets must
+     * begin with the completed ones of `from` (std::invalid_argument
+     * otherwise); later ones may differ (e.g. a higher final density).
+     */
+    void
+    resume(const DieProgress &from);
+
+    /// Why resume(from) would refuse `from` (empty if it would not).
+    std::string
+    resume_mismatch(const DieProgress &from) const;
+
+    /// The progress so far (what a checkpoint stores besides the bed).
+    DieProgress
+    progress_state() const;
+
+    /// The compaction targets, unloading points merged in [-].
+    const std::vector<double> &
+    compaction_targets() const
+    {
+      return protocol.compaction_targets;
+    }
+
+    /// Whether run() or resume() stopped at protocol.stop_after.
+    bool
+    stopped() const
+    {
+      return stopped_early;
+    }
 
     /// Whether run() stopped at a load step that did not converge.
     bool
@@ -211,6 +291,10 @@ namespace compax::dem
     long   consolidation_iterations = 0;
 
   private:
+    /// The compaction targets from index `first` on.
+    void
+    compact_from(std::size_t first);
+
     void
     compact_to(double rho, int step, int n_steps);
 
@@ -236,17 +320,21 @@ namespace compax::dem
     void
     check(const LoadStepResult &r, const std::string &what);
 
-    Bed                        path;
-    const ContactModel        &model;
-    DieProtocol                protocol;
-    LoadStepper                stepper;
-    std::vector<DieRecord>     rows;
-    std::vector<BranchSummary> summaries;
-    std::ostream              *csv        = nullptr;
-    std::ostream              *progress   = nullptr;
-    double                     start_time = 0.0;
-    Bed                        last_good;
-    std::string                failure_message;
-    double                     rho_jammed = 0.0;
+    Bed                          path;
+    const ContactModel          &model;
+    DieProtocol                  protocol;
+    EquilibriumOptions           equilibrium;
+    std::unique_ptr<LoadStepper> stepper;
+    std::vector<DieRecord>       rows;
+    std::vector<BranchSummary>   summaries;
+    std::ostream                *csv        = nullptr;
+    std::ostream                *progress   = nullptr;
+    double                       start_time = 0.0;
+    Bed                          last_good;
+    std::string                  failure_message;
+    double                       rho_jammed    = 0.0;
+    std::size_t                  completed     = 0;
+    int                          n_branches    = 0;
+    bool                         stopped_early = false;
   };
 } // namespace compax::dem
