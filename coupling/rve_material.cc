@@ -11,7 +11,7 @@ namespace compax::coupling
   {
     // History layout.
     constexpr unsigned int stress_at = 0, density_at = 6, modulus_at = 7,
-                           point_at = 14, step_at = 15;
+                           floor_stress_at = 8, point_at = 14, step_at = 15;
 
     constexpr int voigt_i[6] = {0, 1, 2, 1, 0, 0};
     constexpr int voigt_j[6] = {0, 1, 2, 2, 2, 1};
@@ -121,10 +121,23 @@ namespace compax::coupling
       = Eigen::Matrix3d::Identity() + to_eigen(increment.strain_increment);
     dem::map_affinely(cell, stretch * cell.deformation);
     dem::PeriodicBedSystem system(cell, model, assembler);
-    if (dem::mean_pressure(committed[point]) >= spec.loading.jamming_pressure)
+    // Below jamming (judged on the committed cell, so within a step the
+    // branch does not change) the cell rearranges by FIRE with frozen
+    // histories and carries no stress to speak of: its stress and tangent
+    // are taken as zero, which keeps the response smooth for the continuum
+    // Newton (FIRE's relaxed stress is noise at the level of its
+    // tolerance). Once jammed: Newton equilibrium, Love-Weber stress and
+    // condensed tangent.
+    const bool jammed
+      = dem::mean_pressure(committed[point]) >= spec.loading.jamming_pressure;
+    Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
+    dem::Matrix6d   C     = dem::Matrix6d::Zero();
+    if (jammed)
       {
         if (!newton.solve(system).converged)
           return false;
+        sigma = dem::love_weber_stress(cell);
+        C     = tangent.compute(cell, model).condensed;
       }
     else
       {
@@ -136,20 +149,25 @@ namespace compax::coupling
                      * spec.loading.jamming_pressure * M_PI * R * R);
       }
 
-    const Eigen::Matrix3d   sigma = dem::love_weber_stress(cell);
-    const dem::CellTangents t     = tangent.compute(cell, model);
-    const double            Ef    = spec.tangent_floor_modulus;
-    response.stress               = from_eigen(sigma);
-    response.tangent
-      = from_voigt(t.condensed) + fem::isotropic_stiffness_tensor(Ef, 0.25);
+    // The floor is a weak hypoelastic skeleton in parallel with the RVE:
+    // its stress is integrated like any hypoelastic law's, so that stress
+    // and tangent stay consistent.
+    const double                        Ef = spec.tangent_floor_modulus;
+    const dealii::SymmetricTensor<4, 3> floor
+      = fem::isotropic_stiffness_tensor(Ef, 0.25);
+    const dealii::SymmetricTensor<2, 3> floor_stress
+      = fem::load(old_h, floor_stress_at) + floor * increment.strain_increment;
+    response.stress  = from_eigen(sigma) + floor_stress;
+    response.tangent = from_voigt(C) + floor;
 
     for (unsigned int k = 0; k < n_history(); ++k)
       new_h[k] = old_h[k];
     fem::store(response.stress, new_h, stress_at);
+    fem::store(floor_stress, new_h, floor_stress_at);
     new_h[density_at] = cell.relative_density();
     // A representative modulus for the contact penalty: the axial entry of
     // the tangent (uniaxial-strain modulus) plus the floor.
-    new_h[modulus_at] = std::max(t.condensed(2, 2), 0.0) + Ef;
+    new_h[modulus_at] = std::max(C(2, 2), 0.0) + Ef;
     new_h[step_at]    = old_h[step_at] + 1.0;
     return true;
   }
@@ -183,6 +201,9 @@ namespace compax::coupling
                       const dealii::Tensor<2, 3> &R) const
   {
     fem::store(fem::rotate(fem::load(h, stress_at), R), h, stress_at);
+    fem::store(fem::rotate(fem::load(h, floor_stress_at), R),
+               h,
+               floor_stress_at);
     dem::PeriodicBed &cell = trial[static_cast<std::size_t>(h[point_at])];
     dem::map_affinely(cell, to_eigen(R) * cell.deformation);
   }

@@ -22,11 +22,13 @@ namespace compax::coupling
     /// from a copy of packing n mod pool_size, so start-up costs
     /// pool_size packings, not one per point.
     unsigned int pool_size = 4;
-    /// Isotropic stiffness added to the condensed tangent [Pa]: a loose
-    /// cell has no contact network and a zero tangent, which leaves the
-    /// continuum Newton singular; the floor keeps it well-posed and is
-    /// negligible once the powder is jammed.
-    double tangent_floor_modulus = 5e6;
+    /// Young's modulus of a weak isotropic hypoelastic skeleton in
+    /// parallel with the RVE [Pa] (its stress and tangent are added): a
+    /// loose cell has no contact network and a zero tangent, which leaves
+    /// the continuum Newton singular; the floor keeps it well-posed and is
+    /// small once the powder is jammed (1 MPa: ~0.5 MPa of stress after
+    /// compaction from 0.5 to 0.9).
+    double tangent_floor_modulus = 1e6;
   };
 
   /**
@@ -35,7 +37,7 @@ namespace compax::coupling
    * of the continuum step strains its cell (H -> (I + deps) H), the
    * fluctuations are equilibrated with frozen internal variables, and the
    * point returns the Love-Weber stress and the condensed tangent of that
-   * trial state.
+   * trial state, plus those of a weak elastic floor (see the spec).
    *
    * Commit without a solver hook: the history holds the point's RVE index
    * and a step counter that each evaluation increments in the trial

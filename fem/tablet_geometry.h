@@ -1,8 +1,12 @@
 #pragma once
 
+#include "fem/punch_profile.h"
+
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 #include <deal.II/grid/tria.h>
+
+#include <string>
 
 namespace compax::fem
 {
@@ -25,11 +29,16 @@ namespace compax::fem
 
   /// Manifold id of the curved die wall of the 3-D cylinder.
   constexpr dealii::types::manifold_id die_wall_manifold = 0;
+  /// Manifold id of the spherical cup of a concave upper punch in a mesh
+  /// read from a file.
+  constexpr dealii::types::manifold_id punch_cup_manifold = 1;
 
   /**
    * The powder column in a cylindrical die before (or at any state of)
    * compaction: a cylinder of diameter D filled to height H, its lower face
-   * on the lower punch at z = 0.
+   * on the lower punch at z = 0. Under a concave upper punch the powder
+   * also fills the punch cup: H is then the height at the die wall (the
+   * punch land) and the column is H + h_c high on the axis.
    */
   struct TabletGeometry
   {
@@ -42,6 +51,15 @@ namespace compax::fem
     /// Cells along the height; 0 picks the count that makes cells
     /// closest to square [-].
     unsigned int n_axial_cells = 0;
+    /// Face of the upper punch (flat by default).
+    PunchProfile upper_punch;
+    /**
+     * Gmsh .msh file of the compact (r-z quadrilaterals for the
+     * axisymmetric model, hexahedra of the quarter cylinder in 3-D) with
+     * the BoundaryId values as physical ids; empty: the built-in mesh.
+     * read_compact_mesh() takes D and H from it.
+     */
+    std::string mesh_file;
 
     /// R = D/2 [m].
     double
@@ -54,7 +72,8 @@ namespace compax::fem
     unsigned int
     axial_cells() const;
 
-    /// Throws std::invalid_argument unless D > 0, H > 0 and n_radial > 0.
+    /// Throws std::invalid_argument unless D > 0, H > 0, n_radial > 0 and
+    /// the punch profile fits the die.
     void
     validate() const;
 
@@ -73,7 +92,9 @@ namespace compax::fem
    * Triangulation<2>) with the r-z rectangle [0, R] x [0, H] of @p geometry,
    * subdivided into n_radial x axial_cells() rectangles, and sets the
    * BoundaryId of every boundary face. Integrals over it become volume
-   * integrals with the axisymmetric measure 2 pi r dr dz.
+   * integrals with the axisymmetric measure 2 pi r dr dz. A concave upper
+   * punch stretches each column of cells to its face: z -> z (H + c(r)) / H
+   * with c the height of the face above its land.
    */
   void
   make_axisymmetric_compact(dealii::Triangulation<2> &tria,
@@ -105,4 +126,35 @@ namespace compax::fem
   make_quarter_cylindrical_compact(dealii::Triangulation<3> &tria,
                                    const TabletGeometry     &geometry,
                                    unsigned int n_global_refinements = 0);
+
+  /**
+   * Fills the empty @p tria with the compact of @p geometry for the model
+   * of dimension dim (2: r-z, 3: quarter cylinder) refined
+   * @p n_global_refinements times: read from geometry.mesh_file if set
+   * (read_compact_mesh(), which also sets D and H in @p geometry; a
+   * SphericalManifold on the punch cup makes refinement follow it),
+   * otherwise built by make_axisymmetric_compact() or
+   * make_quarter_cylindrical_compact() (a concave cup mapped after
+   * refinement, so every vertex of the punch face lies on it).
+   */
+  template <int dim>
+  void
+  make_compact(dealii::Triangulation<dim> &tria,
+               TabletGeometry             &geometry,
+               unsigned int                n_global_refinements);
+
+  /**
+   * Reads the Gmsh file geometry.mesh_file into the empty @p tria and
+   * checks that it is a compact of this model: quadrilaterals (2-D) or
+   * hexahedra (3-D); boundary ids axis (r = 0, 2-D only), die_wall,
+   * lower_punch (z = 0), upper_punch and, in 3-D, symmetry_x (x = 0) and
+   * symmetry_y (y = 0), each present and on its surface; the upper punch
+   * face on geometry.upper_punch with its land at the top of the die wall.
+   * Sets geometry.die_diameter (2 x radius of the die wall) and
+   * geometry.fill_height (top of the die wall) from the mesh. Throws
+   * std::runtime_error saying what is wrong.
+   */
+  template <int dim>
+  void
+  read_compact_mesh(dealii::Triangulation<dim> &tria, TabletGeometry &geometry);
 } // namespace compax::fem

@@ -10,6 +10,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/fe_values_extractors.h>
 #include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/reference_cell.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -89,18 +90,6 @@ namespace compax::fem
       return F;
     }
 
-    template <int dim>
-    void
-    make_mesh(dealii::Triangulation<dim> &tria, const TabletSolverSettings &s)
-    {
-      if constexpr (dim == 2)
-        {
-          make_axisymmetric_compact(tria, s.geometry);
-          tria.refine_global(s.refinements);
-        }
-      else
-        make_quarter_cylindrical_compact(tria, s.geometry, s.refinements);
-    }
   } // namespace
 
   double
@@ -135,9 +124,9 @@ namespace compax::fem
       , face_quadrature(settings_in.degree + 1)
   {
     settings.geometry.validate();
+    make_compact(tria, settings.geometry, settings.refinements);
     if (settings.die_top <= 0.0)
       settings.die_top = settings.geometry.fill_height;
-    make_mesh(tria, settings);
     space            = std::make_unique<FeSpace<dim>>(tria, fe);
     const auto &dofs = space->dof_handler();
 
@@ -301,6 +290,30 @@ namespace compax::fem
   }
 
   template <int dim>
+  std::vector<dealii::Point<dim>>
+  TabletSolver<dim>::boundary_positions(
+    const dealii::types::boundary_id id) const
+  {
+    std::vector<dealii::Point<dim>> mine;
+    for (const auto &cell : space->dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary()
+              && cell->face(f)->boundary_id() == id)
+            for (const unsigned int v : cell->face(f)->vertex_indices())
+              {
+                dealii::Point<dim> x = cell->face(f)->vertex(v);
+                for (unsigned int d = 0; d < dim; ++d)
+                  x[d] += u_ghost[cell->face(f)->vertex_dof_index(v, d)];
+                mine.push_back(x);
+              }
+    std::vector<dealii::Point<dim>> all;
+    for (const auto &part : dealii::Utilities::MPI::all_gather(comm, mine))
+      all.insert(all.end(), part.begin(), part.end());
+    return all;
+  }
+
+  template <int dim>
   bool
   TabletSolver<dim>::assemble(const bool with_matrix)
   {
@@ -418,7 +431,7 @@ namespace compax::fem
                 const dealii::Point<dim> &x    = ffv.quadrature_point(q);
                 const double              dA   = ffv.JxW(q) * measure_weight(x);
                 dealii::Tensor<1, dim>    normal;
-                double                    gap0 = 0.0, mu = 0.0;
+                double                    gap0 = 0.0, mu = 0.0, curvature = 0.0;
                 if (id == upper_punch)
                   {
                     if (!target_upper_present)
@@ -426,8 +439,22 @@ namespace compax::fem
                         std::fill(fric.begin(), fric.end(), 0.0);
                         continue;
                       }
-                    normal[dim - 1] = 1.0;
-                    gap0            = target_upper - x[dim - 1];
+                    const PunchProfile &punch = settings.geometry.upper_punch;
+                    if (punch.is_flat())
+                      {
+                        normal[dim - 1] = 1.0;
+                        gap0            = target_upper - x[dim - 1];
+                      }
+                    else
+                      {
+                        // Gap and normal where the point is now: exact on
+                        // the curved face (with the curvature term below).
+                        const PunchGap<dim> g
+                          = punch.gap<dim>(x + face_du[q], target_upper);
+                        normal    = g.normal;
+                        gap0      = g.gap + face_du[q] * normal;
+                        curvature = g.curvature;
+                      }
                   }
                 else if (id == lower_punch)
                   {
@@ -478,8 +505,17 @@ namespace compax::fem
                     c.traction += eps_w * g * normal;
                     c.tangent -= eps_w * dealii::outer_product(normal, normal);
                   }
+                if (curvature > 0.0 && c.pressure > 0.0)
+                  {
+                    // The normal of a curved face turns with the point:
+                    // d(-p n)/du += -p (I - n n) / rho.
+                    dealii::Tensor<2, dim> P
+                      = dealii::unit_symmetric_tensor<dim>();
+                    P -= dealii::outer_product(normal, normal);
+                    c.tangent -= (c.pressure * curvature) * P;
+                  }
                 if (id == upper_punch)
-                  f.upper_punch_force += c.pressure * dA;
+                  f.upper_punch_force += c.pressure * normal[dim - 1] * dA;
                 else if (id == lower_punch)
                   f.lower_punch_force -= (c.traction * normal) * dA;
                 else
@@ -798,6 +834,51 @@ namespace compax::fem
   TabletSolver<dim>::write_fields(const std::filesystem::path &folder,
                                   const unsigned int           index) const
   {
+    return write_fields(folder, index, 0.0, true, false).vtu_record;
+  }
+
+  template <int dim>
+  void
+  write_xdmf_record(const std::vector<dealii::XDMFEntry> &entries,
+                    const std::filesystem::path          &file,
+                    MPI_Comm                              communicator)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    std::ofstream out(file);
+    out << "<?xml version=\"1.0\" ?>\n"
+        << "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+        << "<Xdmf Version=\"2.0\">\n"
+        << "  <Domain>\n"
+        << "    <Grid Name=\"CellTime\" GridType=\"Collection\" "
+           "CollectionType=\"Temporal\">\n";
+    for (const auto &entry : entries)
+      out << entry.get_xdmf_content(
+        3, dealii::ReferenceCells::get_hypercube<dim>());
+    out << "    </Grid>\n"
+        << "  </Domain>\n"
+        << "</Xdmf>\n";
+    if (!out)
+      throw std::runtime_error("cannot write " + file.string());
+  }
+
+  template void
+  write_xdmf_record<2>(const std::vector<dealii::XDMFEntry> &,
+                       const std::filesystem::path &,
+                       MPI_Comm);
+  template void
+  write_xdmf_record<3>(const std::vector<dealii::XDMFEntry> &,
+                       const std::filesystem::path &,
+                       MPI_Comm);
+
+  template <int dim>
+  FieldFiles
+  TabletSolver<dim>::write_fields(const std::filesystem::path &folder,
+                                  const unsigned int           index,
+                                  const double                 time,
+                                  const bool                   vtu,
+                                  const bool                   hdf5) const
+  {
     const std::size_t     n_cells = tria.n_active_cells();
     dealii::Vector<float> rho(n_cells), p(n_cells), q(n_cells), eps_v(n_cells),
       eps_eq(n_cells), rank(n_cells);
@@ -857,8 +938,25 @@ namespace compax::fem
                         dealii::DataOut<dim>::type_cell_data);
     out.add_data_vector(rank, "mpi_rank", dealii::DataOut<dim>::type_cell_data);
     out.build_patches(*mapping, settings.degree);
-    return out.write_vtu_with_pvtu_record(
-      folder.string() + "/", "tablet", index, comm, 4, 1);
+    FieldFiles files;
+    if (vtu)
+      files.vtu_record = out.write_vtu_with_pvtu_record(
+        folder.string() + "/", "tablet", index, comm, 4, 1);
+    if (hdf5)
+      {
+        files.hdf5_file
+          = "tablet_" + dealii::Utilities::int_to_string(index, 4) + ".h5";
+        // No merging of the nodes that cells share: a merged node would
+        // carry the value of one of its cells only.
+        dealii::DataOutBase::DataOutFilter filter(
+          dealii::DataOutBase::DataOutFilterFlags(false, true));
+        out.write_filtered_data(filter);
+        out.write_hdf5_parallel(filter,
+                                (folder / files.hdf5_file).string(),
+                                comm);
+        files.xdmf = out.create_xdmf_entry(filter, files.hdf5_file, time, comm);
+      }
+    return files;
   }
 
   template class TabletSolver<2>;

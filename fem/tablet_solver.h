@@ -5,6 +5,7 @@
 #include "fem/quadrature_history.h"
 #include "fem/tablet_geometry.h"
 
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/fe/fe_system.h>
@@ -93,6 +94,30 @@ namespace compax::fem
     double sliding_fraction = 0.0;
   };
 
+  /// The files of one field output of TabletSolver::write_fields().
+  struct FieldFiles
+  {
+    /// Name of the .pvtu record of the .vtu pieces (empty: not written).
+    std::string vtu_record;
+    /// Name of the .h5 file (empty: not written).
+    std::string hdf5_file;
+    /// Its entry for the .xdmf file that lists all steps (valid when
+    /// hdf5_file is not empty).
+    dealii::XDMFEntry xdmf;
+  };
+
+  /**
+   * Writes the .xdmf file @p file that lists the HDF5 field outputs
+   * @p entries of a dim-dimensional model (one per step, in time order) for
+   * ParaView or VisIt, as deal.II's DataOutInterface::write_xdmf_file()
+   * does (which needs a DataOut with patches); rank 0 writes.
+   */
+  template <int dim>
+  void
+  write_xdmf_record(const std::vector<dealii::XDMFEntry> &entries,
+                    const std::filesystem::path          &file,
+                    MPI_Comm                              communicator);
+
   /// The die-wall friction coefficient of @p settings at relative density
   /// @p rho.
   double
@@ -120,6 +145,14 @@ namespace compax::fem
    * style): the cap law is rate-form anyway, and die compaction is nearly
    * coaxial, so the error is of the order of the strain increment (about 1%
    * per step here) on rotations only.
+   *
+   * The mesh is the built-in one or a Gmsh file (make_compact()); the
+   * upper punch face is flat or a concave cup (TabletGeometry::upper_punch)
+   * whose gap is the signed distance of the point to it along its normal,
+   * evaluated at the point's current position with the exact tangent
+   * (normal stiffness plus the turning of the normal on the cup sphere).
+   * The powder is at the initial relative density everywhere, so its mass
+   * is that density times the volume of the mesh.
    *
    * Contact: penalty with regularised Coulomb friction (wall_contact()) on
    * the die wall (the powder fills the bore, so the gap is -u.n;
@@ -174,7 +207,15 @@ namespace compax::fem
       return lower_position;
     }
 
-    /// Initial height of the upper punch face: the fill height [m].
+    /// Geometry of the compact, D and H taken from a mesh file if read.
+    const TabletGeometry &
+    geometry() const
+    {
+      return settings.geometry;
+    }
+
+    /// Initial height of the upper punch face (of the land of a concave
+    /// punch): the fill height [m].
     double
     initial_upper_punch_position() const
     {
@@ -198,11 +239,36 @@ namespace compax::fem
     write_fields(const std::filesystem::path &folder, unsigned int index) const;
 
     /**
+     * Writes the fields (displacement at the nodes; relative density,
+     * pressure, von Mises stress, stress components, plastic strains and
+     * MPI rank per cell) on the deformed mesh into @p folder: as
+     * tablet_NNNN.pvtu/.vtu if @p vtu, as one tablet_NNNN.h5 written by
+     * all ranks (deal.II's parallel HDF5: datasets "nodes", "cells" and
+     * one per field, each cell with its own nodes so that cell fields stay
+     * exact) with its XDMF entry at @p time if @p hdf5. Collective.
+     */
+    FieldFiles
+    write_fields(const std::filesystem::path &folder,
+                 unsigned int                 index,
+                 double                       time,
+                 bool                         vtu,
+                 bool                         hdf5) const;
+
+    /**
      * Volume-averaged Cauchy stress [Pa] over the locally owned cells,
      * summed over ranks: the homogeneous-state tests read it.
      */
     dealii::SymmetricTensor<2, 3>
     mean_stress() const;
+
+    /**
+     * Current positions of the mesh vertices on the boundary @p id, from
+     * all ranks (a vertex shared by several faces appears once per face):
+     * the shape of the tablet, e.g. its thickness on the axis and at the
+     * rim.
+     */
+    std::vector<dealii::Point<dim>>
+    boundary_positions(dealii::types::boundary_id id) const;
 
     /// Number of unknowns.
     dealii::types::global_dof_index

@@ -1,5 +1,7 @@
 #include "apps/tablet/tablet_command.h"
 
+#include "apps/tablet/multiscale_material.h"
+
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
@@ -11,7 +13,13 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/grid/tria.h>
 
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/vector.hpp>
+
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -22,6 +30,8 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace compax::cli
 {
@@ -40,8 +50,12 @@ namespace compax::cli
       std::shared_ptr<const fem::MaterialModel> material;
       unsigned int                              output_interval     = 10;
       bool                                      write_fields        = true;
+      bool                                      write_hdf5          = true;
       unsigned int                              checkpoint_interval = 25;
       std::string                               resume_from;
+      /// multiscale-database or multiscale-fe2 (the material is built in
+      /// run(), not at --check); empty otherwise.
+      std::string multiscale_model;
     };
 
     void
@@ -62,7 +76,40 @@ namespace compax::cli
                        "m",
                        "Height of the powder column as filled; the die is "
                        "filled to its top, so this is also the die-top height "
-                       "above the lower punch.");
+                       "above the lower punch. Under a concave punch: the "
+                       "height at the die wall (the powder also fills the "
+                       "cup).");
+      declare_quantity(prm,
+                       "Cup depth",
+                       "0",
+                       non_negative(),
+                       "m",
+                       "Depth h_c of the spherical cup of a concave upper "
+                       "punch (the tablet is h_c thicker on the axis than at "
+                       "the die wall); 0: flat-faced punch.");
+      declare_quantity(prm,
+                       "Cup radius of curvature",
+                       "16e-3",
+                       positive(),
+                       "m",
+                       "Radius of curvature R_c of the cup; the cup edge "
+                       "radius sqrt(2 R_c h_c - h_c^2) must not exceed D/2 "
+                       "(the rest of the face is a flat land). Used when Cup "
+                       "depth > 0.");
+      prm.declare_entry(
+        "Mesh file",
+        "",
+        dealii::Patterns::Anything(),
+        "Gmsh .msh file of the compact (ASCII; r-z quadrilaterals for the "
+        "axisymmetric model, hexahedra of the quarter cylinder for "
+        "quarter-3d) with physical ids axis 0, die wall 1, lower punch 2 "
+        "(z = 0), upper punch 3 (flat or the cup of Cup depth and Cup radius "
+        "of curvature, its land at the top of the die wall) and, in 3-D, the "
+        "symmetry planes x = 0: 4, y = 0: 5, e.g. meshes/"
+        "concave_punch_rz.msh. A relative path is looked up from the working "
+        "folder, then from the folder of the parameter file. The mesh then "
+        "sets Die diameter and Fill height (those entries and Radial cells "
+        "are ignored). Empty: the built-in mesh. Unit: file path.");
       prm.leave_subsection();
 
       prm.enter_subsection("Mesh");
@@ -95,10 +142,19 @@ namespace compax::cli
       prm.leave_subsection();
 
       prm.enter_subsection("Material");
-      prm.declare_entry("Model",
-                        "drucker-prager-cap",
-                        Selection("drucker-prager-cap|linear-elastic"),
-                        "Constitutive law of the compact. Unit: none.");
+      prm.declare_entry(
+        "Model",
+        "drucker-prager-cap",
+        Selection("drucker-prager-cap|linear-elastic|multiscale-database|"
+                  "multiscale-fe2"),
+        "Constitutive law of the compact: the density-dependent "
+        "Drucker-Prager Cap (table below), linear elastic, "
+        "multiscale-database (an RVE response database is "
+        "built first, see subsection Multiscale, and the "
+        "DPC fitted to it drives the tablet), or "
+        "multiscale-fe2 (an RVE per quadrature point; "
+        "experimental: with small cells it does not yet "
+        "get past the jamming transition). Unit: none.");
       declare_quantity(prm,
                        "Initial relative density",
                        "0.5",
@@ -273,6 +329,12 @@ namespace compax::cli
                         "true",
                         Bool(),
                         "Write PVD/VTU fields. Unit: none.");
+      prm.declare_entry("Write HDF5",
+                        "true",
+                        Bool(),
+                        "With Write fields: also write the fields as "
+                        "tablet_NNNN.h5 (parallel HDF5) listed by "
+                        "tablet.xdmf, for ParaView or VisIt. Unit: none.");
       declare_quantity(prm,
                        "Checkpoint interval",
                        "50",
@@ -290,6 +352,36 @@ namespace compax::cli
                         "copied into the new output). Empty: start afresh. "
                         "Unit: folder path.");
       prm.leave_subsection();
+
+      declare_multiscale_parameters(prm);
+    }
+
+    /// The mesh file @p entry names: absolute, or relative to the working
+    /// folder or to the parameter file's folder.
+    std::filesystem::path
+    find_mesh_file(const std::string &entry)
+    {
+      namespace fs = std::filesystem;
+      const fs::path        path(entry);
+      std::vector<fs::path> candidates{path};
+      if (path.is_relative())
+        {
+          const fs::path folder = parameter_file_directory();
+          if (!folder.empty())
+            candidates.push_back(folder / path);
+        }
+      for (const auto &candidate : candidates)
+        if (fs::is_regular_file(candidate))
+          return fs::absolute(candidate).lexically_normal();
+      std::string where = "no such file";
+      if (path.is_relative())
+        {
+          where += " in the working folder " + fs::current_path().string();
+          if (candidates.size() > 1)
+            where += " or beside the parameter file, in "
+                     + fs::absolute(candidates[1].parent_path()).string();
+        }
+      reject_entry("Mesh file", entry, where);
     }
 
     TabletSetup
@@ -299,6 +391,13 @@ namespace compax::cli
       prm.enter_subsection("Geometry");
       s.solver.geometry.die_diameter = prm.get_double("Die diameter");
       s.solver.geometry.fill_height  = prm.get_double("Fill height");
+      if (prm.get_double("Cup depth") > 0.0)
+        {
+          s.solver.geometry.upper_punch.cup_depth = prm.get_double("Cup depth");
+          s.solver.geometry.upper_punch.cup_radius
+            = prm.get_double("Cup radius of curvature");
+        }
+      const std::string mesh_entry = prm.get("Mesh file");
       prm.leave_subsection();
 
       prm.enter_subsection("Mesh");
@@ -308,20 +407,69 @@ namespace compax::cli
       s.solver.degree                  = prm.get_integer("Polynomial degree");
       prm.leave_subsection();
 
+      if (!mesh_entry.empty())
+        {
+          const std::filesystem::path file = find_mesh_file(mesh_entry);
+          s.solver.geometry.mesh_file      = file.string();
+          try
+            {
+              // Read once here, so that a bad file is bad input before any
+              // output exists; the solver reads it again.
+              if (s.three_d)
+                {
+                  dealii::Triangulation<3> tria;
+                  fem::read_compact_mesh(tria, s.solver.geometry);
+                }
+              else
+                {
+                  dealii::Triangulation<2> tria;
+                  fem::read_compact_mesh(tria, s.solver.geometry);
+                }
+            }
+          catch (const std::exception &e)
+            {
+              reject_entry("Mesh file",
+                           mesh_entry,
+                           std::string(e.what())
+                             + (s.three_d ? " (Mesh/Model = quarter-3d)"
+                                          : " (Mesh/Model = axisymmetric)"));
+            }
+          // The parameters written with the results name the file that
+          // was used, from anywhere.
+          prm.enter_subsection("Geometry");
+          prm.set("Mesh file", file.string());
+          prm.leave_subsection();
+        }
+      else
+        try
+          {
+            s.solver.geometry.upper_punch.validate(s.solver.geometry.radius());
+          }
+        catch (const std::exception &e)
+          {
+            reject_entry("Cup depth",
+                         format_number(s.solver.geometry.upper_punch.cup_depth),
+                         e.what());
+          }
+
       prm.enter_subsection("Material");
       s.solver.initial_relative_density
         = prm.get_double("Initial relative density");
-      if (prm.get("Model") == "linear-elastic")
+      const std::string model = prm.get("Model");
+      if (model == "linear-elastic")
         s.material = std::make_shared<fem::LinearElasticMaterial>(
           prm.get_double("Young's modulus"), prm.get_double("Poisson's ratio"));
+      else if (model.rfind("multiscale", 0) == 0)
+        s.multiscale_model = model;
       else
         {
           const std::string file = prm.get("DPC table");
           try
             {
               s.material = std::make_shared<fem::DruckerPragerCap>(
-                file.empty() ? fem::DpcTable::microcrystalline_cellulose()
-                             : fem::DpcTable::read_csv(file));
+                file.empty()
+                  ? fem::DpcTable::microcrystalline_cellulose()
+                  : fem::DpcTable::read_csv(resolve_input_path(file)));
             }
           catch (const std::exception &e)
             {
@@ -330,6 +478,8 @@ namespace compax::cli
             }
         }
       prm.leave_subsection();
+      if (!s.multiscale_model.empty())
+        check_multiscale_parameters(prm);
 
       prm.enter_subsection("Die");
       s.solver.wall_friction  = prm.get_double("Wall friction coefficient");
@@ -395,6 +545,7 @@ namespace compax::cli
       prm.enter_subsection("Output");
       s.output_interval     = prm.get_integer("Field interval");
       s.write_fields        = prm.get_bool("Write fields");
+      s.write_hdf5          = prm.get_bool("Write HDF5");
       s.checkpoint_interval = prm.get_integer("Checkpoint interval");
       s.resume_from         = prm.get("Resume from");
       if (!s.resume_from.empty()
@@ -468,6 +619,21 @@ namespace compax::cli
                   << dealii::Utilities::MPI::n_mpi_processes(comm)
                   << " MPI rank(s), material " << setup.material->name()
                   << '\n';
+      const double initial_volume = solver.volume(); // collective
+      if (root)
+        {
+          const auto &g = solver.geometry();
+          std::cout << "  die diameter " << g.die_diameter * 1e3
+                    << " mm, fill height " << g.fill_height * 1e3 << " mm";
+          if (!g.upper_punch.is_flat())
+            std::cout << " at the die wall, concave upper punch (cup depth "
+                      << g.upper_punch.cup_depth * 1e3
+                      << " mm, radius of curvature "
+                      << g.upper_punch.cup_radius * 1e3 << " mm)";
+          if (!g.mesh_file.empty())
+            std::cout << ", mesh " << g.mesh_file;
+          std::cout << ", initial volume " << initial_volume * 1e9 << " mm^3\n";
+        }
 
       std::optional<CsvWriter> csv;
       if (root)
@@ -504,10 +670,18 @@ namespace compax::cli
             dealii::DataOutBase::write_pvd_record(out, pvd);
           }
       };
+      std::vector<dealii::XDMFEntry> xdmf;
       auto write_fields = [&](const fem::TabletStep &st) {
         if (!setup.write_fields)
           return;
-        pvd.emplace_back(st.time, solver.write_fields(folder, st.index));
+        const fem::FieldFiles files = solver.write_fields(
+          folder, st.index, st.time, true, setup.write_hdf5);
+        pvd.emplace_back(st.time, files.vtu_record);
+        if (setup.write_hdf5)
+          {
+            xdmf.push_back(files.xdmf);
+            fem::write_xdmf_record<dim>(xdmf, folder / "tablet.xdmf", comm);
+          }
         last_written = st.index;
         write_pvd();
       };
@@ -580,6 +754,9 @@ namespace compax::cli
             fields << std::setprecision(17);
             for (const auto &[time, name] : pvd)
               fields << time << ' ' << name << '\n';
+            std::ofstream                 entries(fresh / "xdmf.txt");
+            boost::archive::text_oarchive archive(entries);
+            archive << xdmf;
           }
         MPI_Barrier(comm);
         if (root)
@@ -654,6 +831,16 @@ namespace compax::cli
                                     fs::copy_options::overwrite_existing);
                 }
               write_pvd();
+              if (setup.write_hdf5
+                  && fs::is_regular_file(old / "checkpoint" / "xdmf.txt"))
+                {
+                  std::ifstream entries(old / "checkpoint" / "xdmf.txt");
+                  boost::archive::text_iarchive archive(entries);
+                  archive >> xdmf;
+                  fem::write_xdmf_record<dim>(xdmf,
+                                              folder / "tablet.xdmf",
+                                              MPI_COMM_SELF);
+                }
               std::cout << "Resuming after step " << done.back().index
                         << " from " << setup.resume_from << '\n';
             }
@@ -786,7 +973,8 @@ namespace compax::cli
       description() const override
       {
         return "Quasi-static finite element model of a powder compact in a "
-               "rigid cylindrical die with flat-faced punches: the upper "
+               "rigid cylindrical die with flat-faced or concave (spherical "
+               "cup, built-in or Gmsh mesh) upper punch: the upper "
                "punch compacts the powder (lower punch fixed), is withdrawn "
                "(the compact separates freely), and the lower punch ejects "
                "the tablet, which expands freely above the die. "
@@ -800,7 +988,8 @@ namespace compax::cli
                "mean die-wall pressures, ejection force, mean relative "
                "density, forces, ...; SI units, pressures positive in "
                "compression), tablet.pvd with tablet_NNNN.pvtu/vtu fields "
-               "(displacement, relative density, stress, plastic strain), "
+               "(displacement, relative density, stress, plastic strain) "
+               "and the same fields as tablet_NNNN.h5 with tablet.xdmf, "
                "tablet.png (pressures and ejection force against time) with "
                "its gnuplot script, and prints progress and a summary.\n\n"
                "Built-in default: a 10 mm flat-faced tablet of "
@@ -840,10 +1029,27 @@ namespace compax::cli
                                                                            argv,
                                                                            1);
           }
-        const TabletSetup setup = read(prm);
+        TabletSetup setup = read(prm);
         // All ranks write their field pieces into rank 0's folder.
         std::string shared = folder.string();
-        shared   = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, shared, 0);
+        shared = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, shared, 0);
+        if (!setup.multiscale_model.empty())
+          {
+            // Every rank builds the same (seeded) material; rank 0 writes
+            // the database files.
+            const bool writer
+              = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+            try
+              {
+                setup.material = make_multiscale_material(
+                  prm, setup.multiscale_model, shared, writer);
+              }
+            catch (const std::runtime_error &e)
+              {
+                std::cerr << "compax tablet: " << e.what() << std::endl;
+                return not_converged;
+              }
+          }
         int code = setup.three_d ? run_model<3>(setup, shared, MPI_COMM_WORLD)
                                  : run_model<2>(setup, shared, MPI_COMM_WORLD);
         return code;

@@ -175,3 +175,10 @@ TEST_F(TabletApp, StoppedRunResumesToTheUninterruptedResult)
         "subsection Output\n  set Resume from = stopped\nend\n");
   EXPECT_EQ(compax("tablet other.prm -o other").exit_code, 2);
 }
+
+TEST_F(TabletApp, MissingMeshFileIsBadInput)
+{
+  write("bad.prm",
+        "subsection Geometry\n  set Mesh file = no_such_mesh.msh\nend\n");
+  expect_rejected(compax("tablet bad.prm -o out"), "Mesh file");
+}

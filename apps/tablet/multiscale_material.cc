@@ -1,0 +1,84 @@
+#include "apps/tablet/multiscale_material.h"
+
+#include "apps/cli/parameters.h"
+#include "apps/database/database_study.h"
+#include "coupling/rve_material.h"
+#include "fem/drucker_prager_cap.h"
+
+#include <iostream>
+
+namespace compax::cli
+{
+  void
+  declare_multiscale_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Multiscale");
+    declare_database_parameters(prm);
+    prm.declare_entry("Pool size",
+                      "4",
+                      dealii::Patterns::Integer(1, 1000),
+                      "multiscale-fe2: distinct RVE packings; quadrature "
+                      "point n starts from a copy of packing n mod pool size "
+                      "(start-up costs this many packings), in [1, 1000]. "
+                      "Unit: -.");
+    declare_quantity(prm,
+                     "Tangent floor modulus",
+                     "1e6",
+                     non_negative(),
+                     "Pa",
+                     "multiscale-fe2: Young's modulus of a weak isotropic "
+                     "hypoelastic skeleton in parallel with each RVE (its "
+                     "stress and tangent are added), so that points whose "
+                     "powder has no contact network yet keep the continuum "
+                     "Newton well-posed.");
+    prm.leave_subsection();
+  }
+
+  void
+  check_multiscale_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Multiscale");
+    get_database_study(prm, "Multiscale/");
+    prm.leave_subsection();
+  }
+
+  std::shared_ptr<fem::MaterialModel>
+  make_multiscale_material(dealii::ParameterHandler    &prm,
+                           const std::string           &model,
+                           const std::filesystem::path &folder,
+                           const bool                   write_files)
+  {
+    prm.enter_subsection("Multiscale");
+    const DatabaseStudy       study = get_database_study(prm, "Multiscale/");
+    coupling::RveMaterialSpec fe2;
+    fe2.packing               = study.spec.packing;
+    fe2.loading               = study.spec.loading;
+    fe2.pool_size             = prm.get_integer("Pool size");
+    fe2.tangent_floor_modulus = prm.get_double("Tangent floor modulus");
+    prm.leave_subsection();
+
+    if (model == "multiscale-fe2")
+      return std::make_shared<coupling::RveMaterial>(fe2, study.cell.model);
+
+    std::ostream  null(nullptr);
+    std::ostream &log = write_files ? std::cout : null;
+    log << "RVE response database (" << study.spec.packing.particle_count
+        << " particles, " << study.cell.size_description << "):" << std::endl;
+    const coupling::RveDatabase db
+      = coupling::build_rve_database(study.spec,
+                                     study.cell.model,
+                                     [](const std::string &line) {
+                                       std::cout << "  " << line << std::endl;
+                                     });
+    const std::filesystem::path out = folder / "database";
+    std::filesystem::create_directories(out);
+    write_database_rows(out, db);
+    write_database_archive(out, db);
+    std::vector<std::string> notes;
+    const auto rows = coupling::fit_drucker_prager_cap(db, &notes);
+    for (const std::string &n : notes)
+      std::cout << "  note: " << n << std::endl;
+    write_dpc_table(out, rows);
+    return std::make_shared<fem::DruckerPragerCap>(to_dpc_table(rows));
+  }
+} // namespace compax::cli
