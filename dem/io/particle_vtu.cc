@@ -1,5 +1,6 @@
 #include "dem/io/particle_vtu.h"
 
+#include <algorithm>
 #include <fstream>
 #include <stdexcept>
 
@@ -22,44 +23,51 @@ namespace compax::dem
     }
   } // namespace
 
-  void
-  write_particles_vtu(const std::filesystem::path &file, const Bed &bed)
+  ParticleSnapshot::ParticleSnapshot(const ParticleSystem &p)
+      : points(p.positions)
+      , radii(p.radii)
+      , material(p.materials.begin(), p.materials.end())
+      , coordination(p.size(), 0)
+      , bonds(p.size(), 0)
+      , plastic_radius(p.size(), 0.0)
+      , force_sum(p.size(), 0.0)
+      , net(p.size(), Eigen::Vector3d::Zero())
   {
-    const auto                  &p = bed.particles;
-    const std::size_t            n = p.size();
-    std::vector<int>             coordination(n, 0), bonds(n, 0);
-    std::vector<double>          plastic_radius(n, 0.0), force_sum(n, 0.0);
-    std::vector<Eigen::Vector3d> net(n, Eigen::Vector3d::Zero());
-    for (const PairContact &c : bed.contacts.pairs)
+  }
+
+  void
+  ParticleSnapshot::add_contact(const std::uint32_t    i,
+                                const std::uint32_t    j,
+                                const Eigen::Vector3d &n,
+                                const double           P,
+                                const ContactHistory  &h)
+  {
+    for (const auto k : {i, j})
       {
-        const double P
-          = c.law.response(pair_overlap(p, c), c.history.a_p, c.history.a_B)
-              .force;
-        for (const auto k : {c.i, c.j})
-          {
-            plastic_radius[k] = std::max(plastic_radius[k], c.history.a_p);
-            bonds[k] += c.history.a_B > 0.0;
-          }
-        if (P == 0.0)
-          continue;
-        const Eigen::Vector3d n_ij
-          = (p.positions[c.i] - p.positions[c.j]).normalized();
-        net[c.i] += P * n_ij;
-        net[c.j] -= P * n_ij;
-        for (const auto k : {c.i, c.j})
-          {
-            ++coordination[k];
-            force_sum[k] += P;
-          }
+        plastic_radius[k] = std::max(plastic_radius[k], h.a_p);
+        bonds[k] += h.a_B > 0.0;
       }
+    if (P == 0.0)
+      return;
+    net[i] += P * n;
+    net[j] -= P * n;
+    for (const auto k : {i, j})
+      {
+        ++coordination[k];
+        force_sum[k] += P;
+      }
+  }
+
+  void
+  ParticleSnapshot::write(const std::filesystem::path &file) const
+  {
+    const std::size_t   n = points.size();
     std::vector<double> net_force(n), mean_force(n);
     for (std::size_t k = 0; k < n; ++k)
       {
         net_force[k]  = net[k].norm();
         mean_force[k] = coordination[k] ? force_sum[k] / coordination[k] : 0;
       }
-    std::vector<int> material(p.materials.begin(), p.materials.end());
-
     std::ofstream out(file);
     if (!out)
       throw std::runtime_error("cannot write '" + file.string() + "'");
@@ -70,7 +78,7 @@ namespace compax::dem
         << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n
         << "\">\n      <Points>\n        <DataArray type=\"Float64\" "
            "NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (const auto &x : p.positions)
+    for (const auto &x : points)
       out << "          " << x[0] << ' ' << x[1] << ' ' << x[2] << '\n';
     out << "        </DataArray>\n      </Points>\n      <Cells>\n";
     std::vector<std::size_t> connectivity(n), offsets(n);
@@ -84,7 +92,7 @@ namespace compax::dem
     write_array(out, "offsets", "Int64", offsets);
     write_array(out, "types", "UInt8", types);
     out << "      </Cells>\n      <PointData Scalars=\"radius\">\n";
-    write_array(out, "radius", "Float64", p.radii);
+    write_array(out, "radius", "Float64", radii);
     write_array(out, "material", "Int32", material);
     write_array(out, "coordination", "Int32", coordination);
     write_array(out, "net_force", "Float64", net_force);
@@ -93,6 +101,21 @@ namespace compax::dem
     write_array(out, "bonds", "Int32", bonds);
     out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n"
         << "</VTKFile>\n";
+  }
+
+  void
+  write_particles_vtu(const std::filesystem::path &file, const Bed &bed)
+  {
+    const ParticleSystem &p = bed.particles;
+    ParticleSnapshot      snapshot(p);
+    for (const PairContact &c : bed.contacts.pairs)
+      snapshot.add_contact(
+        c.i,
+        c.j,
+        (p.positions[c.i] - p.positions[c.j]).normalized(),
+        c.law.response(pair_overlap(p, c), c.history.a_p, c.history.a_B).force,
+        c.history);
+    snapshot.write(file);
   }
 
   void

@@ -10,6 +10,45 @@
 namespace compax::dem
 {
   /**
+   * The point data of a particle snapshot gathered contact by contact
+   * (coordination, net force, mean contact force, largest a_p, intact
+   * bonds), written as a VTK XML unstructured grid of vertices. Any
+   * contact set feeds it (die beds, periodic cells), each with its own
+   * branch vectors.
+   */
+  class ParticleSnapshot
+  {
+  public:
+    explicit ParticleSnapshot(const ParticleSystem &particles);
+
+    /// A contact between i and j with unit normal n (from j to i), normal
+    /// force P (positive repulsive) and internal variables.
+    void
+    add_contact(std::uint32_t          i,
+                std::uint32_t          j,
+                const Eigen::Vector3d &n,
+                double                 force,
+                const ContactHistory  &history);
+
+    /// Positions written (e.g. wrapped into a periodic cell first).
+    std::vector<Eigen::Vector3d> &
+    positions()
+    {
+      return points;
+    }
+
+    void
+    write(const std::filesystem::path &file) const;
+
+  private:
+    std::vector<Eigen::Vector3d> points;
+    std::vector<double>          radii;
+    std::vector<int>             material, coordination, bonds;
+    std::vector<double>          plastic_radius, force_sum;
+    std::vector<Eigen::Vector3d> net;
+  };
+
+  /**
    * Writes the particles of a bed as a VTK XML unstructured grid of vertices
    * (.vtu), for ParaView: glyph them with spheres scaled by "radius". Point
    * data: radius [m], material, coordination (number of loaded particle
