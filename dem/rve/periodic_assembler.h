@@ -4,6 +4,7 @@
 #include "dem/solver/block_sparse_matrix.h"
 #include "dem/solver/contact_model.h"
 #include "dem/solver/contact_sums.h"
+#include "dem/solver/pair_pattern.h"
 
 #include <Eigen/Core>
 
@@ -60,13 +61,7 @@ namespace compax::dem
              BlockSparseMatrix *K,
              ContactBranch      branch);
 
-    void
-    refresh_pattern(const PeriodicBed &bed, BlockSparseMatrix &K);
 
-    std::uint64_t              pattern_revision = ~std::uint64_t(0);
-    std::size_t                pattern_size     = 0;
-    const BlockSparseMatrix   *pattern_matrix   = nullptr;
-    std::vector<std::uint32_t> pair_slots; // (ij, ji) per contact
-    std::vector<ParticlePair>  scratch_pairs;
+    PairPattern pattern;
   };
 } // namespace compax::dem

@@ -75,29 +75,6 @@ namespace compax::dem
     return r;
   }
 
-  void
-  ContactAssembler::refresh_pattern(const Bed &bed, BlockSparseMatrix &K)
-  {
-    if (pattern_revision == bed.contacts.revision()
-        && pattern_size == bed.particles.size() && pattern_matrix == &K)
-      return;
-    const auto &pairs = bed.contacts.pairs;
-    scratch_pairs.clear();
-    scratch_pairs.reserve(pairs.size());
-    for (const PairContact &c : pairs)
-      scratch_pairs.emplace_back(c.i, c.j);
-    K.reinit(bed.particles.size(), scratch_pairs);
-    pair_slots.resize(2 * pairs.size());
-    for (std::size_t k = 0; k < pairs.size(); ++k)
-      {
-        pair_slots[2 * k]     = K.slot(pairs[k].i, pairs[k].j);
-        pair_slots[2 * k + 1] = K.slot(pairs[k].j, pairs[k].i);
-      }
-    pattern_revision = bed.contacts.revision();
-    pattern_size     = bed.particles.size();
-    pattern_matrix   = &K;
-  }
-
   ContactSums
   ContactAssembler::residual(Bed                &bed,
                              const ContactModel &model,
@@ -114,7 +91,10 @@ namespace compax::dem
                              BlockSparseMatrix  &K)
   {
     bed.contacts.update(bed.particles, bed.walls, model);
-    refresh_pattern(bed, K);
+    pattern.refresh(bed.particles.size(),
+                    bed.contacts.revision(),
+                    bed.contacts.pairs,
+                    K);
     K.set_zero();
     return evaluate<true>(bed, F, &K);
   }
@@ -156,8 +136,8 @@ namespace compax::dem
             const PairBlock blk(r, dist);
             blk.add_to(K->block(K->diagonal_slot(c.i)), 1.0, n);
             blk.add_to(K->block(K->diagonal_slot(c.j)), 1.0, n);
-            blk.add_to(K->block(pair_slots[2 * k]), -1.0, n);
-            blk.add_to(K->block(pair_slots[2 * k + 1]), -1.0, n);
+            blk.add_to(K->block(pattern.ij(k)), -1.0, n);
+            blk.add_to(K->block(pattern.ji(k)), -1.0, n);
           }
       }
 

@@ -3,6 +3,7 @@
 #include "dem/solver/bed.h"
 #include "dem/solver/block_sparse_matrix.h"
 #include "dem/solver/contact_sums.h"
+#include "dem/solver/pair_pattern.h"
 
 #include <Eigen/Core>
 
@@ -67,13 +68,7 @@ namespace compax::dem
     ContactSums
     evaluate(const Bed &bed, Eigen::VectorXd &F, BlockSparseMatrix *K);
 
-    void
-    refresh_pattern(const Bed &bed, BlockSparseMatrix &K);
 
-    std::uint64_t              pattern_revision = ~std::uint64_t(0);
-    std::size_t                pattern_size     = 0;
-    const BlockSparseMatrix   *pattern_matrix   = nullptr;
-    std::vector<std::uint32_t> pair_slots; // (ij, ji) per pair contact
-    std::vector<ParticlePair>  scratch_pairs;
+    PairPattern pattern;
   };
 } // namespace compax::dem
