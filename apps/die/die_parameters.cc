@@ -1,6 +1,7 @@
 #include "apps/die/die_parameters.h"
 
 #include "apps/cli/parameters.h"
+#include "apps/common/equilibrium_parameters.h"
 #include "apps/common/material_parameters.h"
 
 #include <algorithm>
@@ -244,25 +245,7 @@ namespace compax::cli
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
-    declare_quantity(prm,
-                     "Force tolerance",
-                     "1e-6",
-                     open(0.0, 1.0),
-                     "-",
-                     "Converged when the largest net force on a particle is "
-                     "below this times the mean contact force.");
-    declare_quantity(prm,
-                     "Step tolerance",
-                     "1e-4",
-                     open(0.0, 1.0),
-                     "-",
-                     "... and the largest particle displacement of the last "
-                     "Newton step is below this times the mean radius.");
-    prm.declare_entry("Maximum iterations",
-                      "200",
-                      dealii::Patterns::Integer(1, 1000000),
-                      "Trust-region Newton iterations per load step before "
-                      "the step is cut back, in [1, 1e6].");
+    declare_equilibrium_tolerances(prm);
     prm.leave_subsection();
   }
 
@@ -395,9 +378,7 @@ namespace compax::cli
 
     prm.enter_subsection("Solver");
     dem::EquilibriumOptions equilibrium;
-    equilibrium.force_tolerance = prm.get_double("Force tolerance");
-    equilibrium.step_tolerance  = prm.get_double("Step tolerance");
-    equilibrium.max_iterations  = prm.get_integer("Maximum iterations");
+    get_equilibrium_tolerances(prm, equilibrium);
     prm.leave_subsection();
 
     return {deposition,

@@ -2,6 +2,7 @@
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
+#include "apps/common/equilibrium_parameters.h"
 #include "apps/common/material_parameters.h"
 #include "dem/periodic/size_distribution_fit.h"
 
@@ -288,25 +289,7 @@ namespace compax::cli
   declare_rve_solver_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    declare_quantity(prm,
-                     "Force tolerance",
-                     "1e-6",
-                     open(0.0, 1.0),
-                     "-",
-                     "Converged when the largest net force on a particle is "
-                     "below this times the mean contact force.");
-    declare_quantity(prm,
-                     "Step tolerance",
-                     "1e-4",
-                     open(0.0, 1.0),
-                     "-",
-                     "... and the largest particle displacement of the last "
-                     "Newton step is below this times the mean radius.");
-    prm.declare_entry("Maximum iterations",
-                      "200",
-                      dealii::Patterns::Integer(1, 1000000),
-                      "Trust-region Newton iterations per sub-step before "
-                      "the sub-step is cut back, in [1, 1e6].");
+    declare_equilibrium_tolerances(prm);
     declare_quantity(prm,
                      "Jamming pressure",
                      "0.5e6",
@@ -553,10 +536,8 @@ namespace compax::cli
   {
     dem::RveLoadingOptions o;
     prm.enter_subsection("Solver");
-    o.equilibrium.force_tolerance = prm.get_double("Force tolerance");
-    o.equilibrium.step_tolerance  = prm.get_double("Step tolerance");
-    o.equilibrium.max_iterations  = prm.get_integer("Maximum iterations");
-    o.jamming_pressure            = prm.get_double("Jamming pressure");
+    get_equilibrium_tolerances(prm, o.equilibrium);
+    o.jamming_pressure = prm.get_double("Jamming pressure");
     prm.leave_subsection();
     return o;
   }

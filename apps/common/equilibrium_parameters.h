@@ -1,0 +1,19 @@
+#pragma once
+
+#include "dem/solver/trust_region_newton.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace compax::cli
+{
+  /// Declares, in the current subsection, the convergence entries of the
+  /// particle equilibrium solver: Force tolerance, Step tolerance, Maximum
+  /// iterations (per load step or sub-step).
+  void
+  declare_equilibrium_tolerances(dealii::ParameterHandler &prm);
+
+  /// Reads them into @p options.
+  void
+  get_equilibrium_tolerances(dealii::ParameterHandler &prm,
+                             dem::EquilibriumOptions  &options);
+} // namespace compax::cli
