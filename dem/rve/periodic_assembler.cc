@@ -73,20 +73,19 @@ namespace compax::dem
         if (r.force == 0.0 && r.stiffness == 0.0)
           continue;
         const Eigen::Vector3d n = d / dist;
-        F.template segment<3>(3 * c.i) -= r.force * n;
-        F.template segment<3>(3 * c.j) += r.force * n;
+        scatter_pair(F,
+                     with_stiffness ? K : nullptr,
+                     c.i,
+                     c.j,
+                     with_stiffness ? pattern.ij(k) : 0,
+                     with_stiffness ? pattern.ji(k) : 0,
+                     n,
+                     dist,
+                     r);
         if (r.force != 0.0)
           {
             ++sums.n_loaded;
             sum_abs += std::abs(r.force);
-          }
-        if constexpr (with_stiffness)
-          {
-            const PairBlock blk(r, dist);
-            blk.add_to(K->block(K->diagonal_slot(c.i)), 1.0, n);
-            blk.add_to(K->block(K->diagonal_slot(c.j)), 1.0, n);
-            blk.add_to(K->block(pattern.ij(k)), -1.0, n);
-            blk.add_to(K->block(pattern.ji(k)), -1.0, n);
           }
       }
     if (sums.n_loaded > 0)

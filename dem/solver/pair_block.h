@@ -1,8 +1,11 @@
 #pragma once
 
 #include "dem/contact/contact_response.h"
+#include "dem/solver/block_sparse_matrix.h"
 
 #include <Eigen/Core>
+
+#include <cstdint>
 
 namespace compax::dem
 {
@@ -39,4 +42,31 @@ namespace compax::dem
       return a * n * n.transpose() + b * Eigen::Matrix3d::Identity();
     }
   };
+
+  /**
+   * Adds a central pair force to the residual, F_i -= P n, F_j += P n
+   * (n from j to i, |d| = distance), and, with K, its blocks: +k on the
+   * diagonal blocks of i and j, -k on (i, j) and (j, i) at the given slots.
+   */
+  inline void
+  scatter_pair(Eigen::VectorXd       &F,
+               BlockSparseMatrix     *K,
+               const std::uint32_t    i,
+               const std::uint32_t    j,
+               const std::size_t      slot_ij,
+               const std::size_t      slot_ji,
+               const Eigen::Vector3d &n,
+               const double           distance,
+               const ContactResponse &r)
+  {
+    F.segment<3>(3 * i) -= r.force * n;
+    F.segment<3>(3 * j) += r.force * n;
+    if (K == nullptr)
+      return;
+    const PairBlock blk(r, distance);
+    blk.add_to(K->block(K->diagonal_slot(i)), 1.0, n);
+    blk.add_to(K->block(K->diagonal_slot(j)), 1.0, n);
+    blk.add_to(K->block(slot_ij), -1.0, n);
+    blk.add_to(K->block(slot_ji), -1.0, n);
+  }
 } // namespace compax::dem
