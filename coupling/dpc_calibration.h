@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 namespace compax::coupling
 {
   /// Stress invariants p = -tr(sigma)/3 (compression positive) and
@@ -47,4 +49,22 @@ namespace compax::coupling
   CapParameters
   cap_through_uniaxial_state(const StressInvariants &state,
                              const ShearLine        &line);
+
+  /**
+   * Tabulated cap pressures for a DPC table whose rows sit at the
+   * (increasing) densities @p rows while each fitted cap pressure
+   * @p cap_pressure[k] belongs to the plastic density @p plastic_density[k]
+   * (the DPC hardens its cap with the plastic density, which at a loaded
+   * state lies below the total density by the elastic volumetric strain).
+   * Returns the values y_k at the rows such that the table's rule
+   * (fem::DpcTable::cap_pressure: linear in log p_b between rows, linear
+   * extrapolation of log p_b outside) gives cap_pressure[k] at
+   * plastic_density[k] for every k, by solving that linear system in
+   * log p_b. Throws std::domain_error if it is singular (two plastic
+   * densities in one interval of the rows' extrapolation).
+   */
+  std::vector<double>
+  cap_pressures_at_rows(const std::vector<double> &rows,
+                        const std::vector<double> &plastic_density,
+                        const std::vector<double> &cap_pressure);
 } // namespace compax::coupling

@@ -11,7 +11,8 @@ namespace compax::coupling
   {
     // History layout.
     constexpr unsigned int stress_at = 0, density_at = 6, modulus_at = 7,
-                           floor_stress_at = 8, point_at = 14, step_at = 15;
+                           floor_stress_at = 8, point_at = 14, step_at = 15,
+                           jammed_at = 16;
 
     constexpr int voigt_i[6] = {0, 1, 2, 1, 0, 0};
     constexpr int voigt_j[6] = {0, 1, 2, 2, 2, 1};
@@ -67,30 +68,88 @@ namespace compax::coupling
   }
 
   void
+  RveMaterial::make_templates(const double rho) const
+  {
+    templates.clear();
+    template_jamming_density.clear();
+    if (!spec.pool.empty())
+      {
+        for (const dem::PeriodicBed &cell : spec.pool)
+          {
+            templates.push_back(cell);
+            template_jamming_density.push_back(cell.relative_density());
+          }
+      }
+    else
+      {
+        consolidate_templates(rho);
+      }
+    const int axis = static_cast<int>(spec.compaction_axis);
+    template_modulus.clear();
+    for (dem::PeriodicBed &cell : templates)
+      template_modulus.push_back(
+        std::max(tangent.compute(cell, model).condensed(axis, axis), 0.0));
+    template_density = rho;
+  }
+
+  void
+  RveMaterial::consolidate_templates(const double rho) const
+  {
+    dem::RveLoading loading(model, spec.loading);
+    Eigen::Matrix3d axial_step = Eigen::Matrix3d::Zero();
+    axial_step(spec.compaction_axis, spec.compaction_axis)
+      = -spec.consolidation_strain_step;
+    for (unsigned int k = 0; k < spec.pool_size; ++k)
+      {
+        dem::PeriodicPackingSpec p = spec.packing;
+        p.relative_density         = rho;
+        p.seed                     = spec.packing.seed + k;
+        dem::PeriodicBed cell      = dem::make_periodic_packing(p, model);
+        // Uniaxial consolidation (the die's kinematics) to the jamming
+        // pressure; the loading updates the histories on the way.
+        while (dem::mean_pressure(cell) < spec.loading.jamming_pressure)
+          {
+            if (cell.relative_density() > 0.95
+                || !loading.apply_strain(cell, axial_step).converged)
+              throw std::runtime_error(
+                "multiscale-fe2: pool packing " + std::to_string(k)
+                + " did not jam under uniaxial compaction (relative density "
+                + std::to_string(cell.relative_density()) + ")");
+          }
+        template_jamming_density.push_back(cell.relative_density());
+        templates.push_back(std::move(cell));
+      }
+  }
+
+  void
   RveMaterial::initialize(const double rho, dealii::ArrayView<double> h) const
   {
     if (templates.empty() || template_density != rho)
-      {
-        templates.clear();
-        for (unsigned int k = 0; k < spec.pool_size; ++k)
-          {
-            dem::PeriodicPackingSpec p = spec.packing;
-            p.relative_density         = rho;
-            p.seed                     = spec.packing.seed + k;
-            templates.push_back(dem::make_periodic_packing(p, model));
-          }
-        template_density = rho;
-      }
+      make_templates(rho);
     const std::size_t point = committed.size();
-    committed.push_back(templates[point % templates.size()]);
-    trial.push_back(committed.back());
+    // The point owns no cell until it jams (see the class comment).
+    committed.emplace_back();
+    trial.emplace_back();
     committed_steps.push_back(0.0);
     for (double &v : h)
       v = 0.0;
-    h[density_at] = committed.back().relative_density();
-    h[modulus_at] = spec.tangent_floor_modulus;
-    h[point_at]   = static_cast<double>(point);
-    h[step_at]    = 0.0;
+    h[density_at] = rho;
+    // A point that starts jammed (e.g. a lattice pool) reports its
+    // packing's modulus from the start: the contact penalty scales with it.
+    const std::size_t pooled = point % templates.size();
+    h[modulus_at]
+      = spec.tangent_floor_modulus
+        + (rho >= template_jamming_density[pooled] ? template_modulus[pooled]
+                                                   : 0.0);
+    h[point_at]  = static_cast<double>(point);
+    h[step_at]   = 0.0;
+    h[jammed_at] = 0.0;
+  }
+
+  bool
+  RveMaterial::is_jammed(dealii::ArrayView<const double> h)
+  {
+    return h[jammed_at] != 0.0;
   }
 
   void
@@ -100,10 +159,63 @@ namespace compax::coupling
     if (committed_step == committed_steps[point] + 1.0)
       {
         dem::PeriodicBed &cell = trial[point];
-        cell.contacts.update_histories(cell.particles, cell.cell);
+        if (cell.particles.size() > 0)
+          cell.contacts.update_histories(cell.particles, cell.cell);
         committed[point]       = cell;
         committed_steps[point] = committed_step;
       }
+  }
+
+  bool
+  RveMaterial::solve_at(dem::PeriodicBed &cell, const Eigen::Matrix3d &F) const
+  {
+    try
+      {
+        dem::map_affinely(cell, F);
+        dem::PeriodicBedSystem system(cell, model, assembler);
+        newton.reset();
+        return newton.solve(system).converged;
+      }
+    catch (const std::runtime_error &)
+      {
+        // E.g. a cell sheared thinner than its particles: no equilibrium
+        // this point can reach; the continuum step is cut.
+        return false;
+      }
+  }
+
+  bool
+  RveMaterial::equilibrate_at(dem::PeriodicBed       &cell,
+                              const dem::PeriodicBed &start,
+                              const Eigen::Matrix3d  &F) const
+  {
+    cell = start;
+    if (solve_at(cell, F))
+      return true;
+    // Continuation: halved sub-steps from the start of the step, grown
+    // back after successes; histories stay frozen throughout.
+    cell                     = start;
+    const Eigen::Matrix3d F0 = start.deformation;
+    dem::PeriodicBed      saved;
+    double                done = 0.0, size = 0.5;
+    while (done < 1.0)
+      {
+        const double t = std::min(1.0, done + size);
+        saved          = cell;
+        if (solve_at(cell, t >= 1.0 ? F : F0 + t * (F - F0)))
+          {
+            done = t;
+            size = std::min(1.0, 2.0 * size);
+          }
+        else
+          {
+            cell = saved;
+            size *= 0.5;
+            if (size < 1.0 / 64.0)
+              return false;
+          }
+      }
+    return true;
   }
 
   bool
@@ -115,38 +227,50 @@ namespace compax::coupling
     const auto point = static_cast<std::size_t>(old_h[point_at]);
     catch_up(point, old_h[step_at]);
 
-    dem::PeriodicBed &cell = trial[point];
-    cell                   = committed[point];
-    const Eigen::Matrix3d stretch
-      = Eigen::Matrix3d::Identity() + to_eigen(increment.strain_increment);
-    dem::map_affinely(cell, stretch * cell.deformation);
-    dem::PeriodicBedSystem system(cell, model, assembler);
-    // Below jamming (judged on the committed cell, so within a step the
-    // branch does not change) the cell rearranges by FIRE with frozen
-    // histories and carries no stress to speak of: its stress and tangent
-    // are taken as zero, which keeps the response smooth for the continuum
-    // Newton (FIRE's relaxed stress is noise at the level of its
-    // tolerance). Once jammed: Newton equilibrium, Love-Weber stress and
-    // condensed tangent.
-    const bool jammed
-      = dem::mean_pressure(committed[point]) >= spec.loading.jamming_pressure;
+    const Eigen::Matrix3d deps         = to_eigen(increment.strain_increment);
+    const Eigen::Matrix3d I            = Eigen::Matrix3d::Identity();
+    const double          volume_ratio = (I + deps).determinant();
+    if (!(volume_ratio > 0.0))
+      return false;
+    const double rho_trial = old_h[density_at] / volume_ratio;
+
+    // A point switches to its jammed packing at the start of the step
+    // after its density passed the packing's jamming density (decided on
+    // the committed state, so that within a step the response is a smooth
+    // function of the increment for the continuum Newton). The density
+    // overshoot of that last unjammed step is applied to the packing as
+    // uniaxial compaction, the kinematics it was consolidated in.
+    dem::PeriodicBed &cell    = trial[point];
+    const std::size_t pooled  = point % templates.size();
+    const double      rho_old = old_h[density_at];
+    const bool        jammed
+      = is_jammed(old_h) || rho_old >= template_jamming_density[pooled];
     Eigen::Matrix3d sigma = Eigen::Matrix3d::Zero();
     dem::Matrix6d   C     = dem::Matrix6d::Zero();
     if (jammed)
       {
-        if (!newton.solve(system).converged)
+        const bool              switching = !is_jammed(old_h);
+        const dem::PeriodicBed &start
+          = switching ? templates[pooled] : committed[point];
+        Eigen::Matrix3d overshoot = I;
+        if (switching)
+          overshoot(spec.compaction_axis, spec.compaction_axis)
+            = template_jamming_density[pooled] / rho_old;
+        const Eigen::Matrix3d F = (I + deps) * overshoot * start.deformation;
+        if (!equilibrate_at(cell, start, F))
           return false;
-        sigma = dem::love_weber_stress(cell);
-        C     = tangent.compute(cell, model).condensed;
       }
-    else
+    if (jammed)
       {
-        const double R = cell.particles.mean_radius();
-        fire.relax(system,
-                   spec.loading.fire_tolerance,
-                   spec.loading.fire_iterations,
-                   spec.loading.force_floor_fraction
-                     * spec.loading.jamming_pressure * M_PI * R * R);
+        sigma = dem::love_weber_stress(cell);
+        try
+          {
+            C = tangent.compute(cell, model).condensed;
+          }
+        catch (const std::runtime_error &)
+          {
+            return false;
+          }
       }
 
     // The floor is a weak hypoelastic skeleton in parallel with the RVE:
@@ -164,11 +288,14 @@ namespace compax::coupling
       new_h[k] = old_h[k];
     fem::store(response.stress, new_h, stress_at);
     fem::store(floor_stress, new_h, floor_stress_at);
-    new_h[density_at] = cell.relative_density();
+    new_h[density_at]
+      = jammed ? cell.relative_density() : rho_old / volume_ratio;
     // A representative modulus for the contact penalty: the axial entry of
     // the tangent (uniaxial-strain modulus) plus the floor.
-    new_h[modulus_at] = std::max(C(2, 2), 0.0) + Ef;
+    const int axis    = static_cast<int>(spec.compaction_axis);
+    new_h[modulus_at] = std::max(C(axis, axis), 0.0) + Ef;
     new_h[step_at]    = old_h[step_at] + 1.0;
+    new_h[jammed_at]  = jammed ? 1.0 : 0.0;
     return true;
   }
 
@@ -204,6 +331,8 @@ namespace compax::coupling
     fem::store(fem::rotate(fem::load(h, floor_stress_at), R),
                h,
                floor_stress_at);
+    if (!is_jammed(h))
+      return;
     dem::PeriodicBed &cell = trial[static_cast<std::size_t>(h[point_at])];
     dem::map_affinely(cell, to_eigen(R) * cell.deformation);
   }

@@ -22,6 +22,18 @@ namespace compax::coupling
     /// from a copy of packing n mod pool_size, so start-up costs
     /// pool_size packings, not one per point.
     unsigned int pool_size = 4;
+    /// Index of the compaction axis in the tablet model's stress frame
+    /// (r-z model: 1, the axial row of (r, z, theta); 3-D: 2) [-]: the
+    /// axis along which the pool packings are consolidated.
+    unsigned int compaction_axis = 2;
+    /// Logarithmic axial strain per step of the uniaxial consolidation
+    /// that brings each pool packing to its jamming pressure [-].
+    double consolidation_strain_step = 0.005;
+    /// Jammed cells to use instead of drawing packings (e.g. regular
+    /// lattices): taken as they are, each one's relative density is the
+    /// density at which a point switches to it. Empty: draw and
+    /// consolidate `pool_size` packings.
+    std::vector<dem::PeriodicBed> pool;
     /// Young's modulus of a weak isotropic hypoelastic skeleton in
     /// parallel with the RVE [Pa] (its stress and tangent are added): a
     /// loose cell has no contact network and a zero tangent, which leaves
@@ -38,6 +50,20 @@ namespace compax::coupling
    * fluctuations are equilibrated with frozen internal variables, and the
    * point returns the Love-Weber stress and the condensed tangent of that
    * trial state, plus those of a weak elastic floor (see the spec).
+   *
+   * Consolidation, as in the die (Gonzalez 2018 §5): a powder below its
+   * jamming point has no contact network and carries no stress to speak
+   * of, and an RVE there is a gas that Newton cannot equilibrate (FIRE
+   * can, at great cost, and the cell shears freely). So a point starts
+   * unjammed and carries only the floor while its density (mass balance)
+   * stays below the jamming density of its pool packing; each pool
+   * packing is brought to its jamming pressure once, at start-up, by
+   * uniaxial compaction. In the step that crosses it, the point takes a
+   * copy of the jammed packing and strains it by the part of the
+   * increment beyond the jamming density; from then on it is a full FE2
+   * point. Equilibrium from the affine predictor falls back to
+   * continuation (sub-steps of the increment, histories frozen) so the
+   * trial stays a function of the committed cell and the increment only.
    *
    * Commit without a solver hook: the history holds the point's RVE index
    * and a step counter that each evaluation increments in the trial
@@ -66,7 +92,7 @@ namespace compax::coupling
     unsigned int
     n_history() const override
     {
-      return 16;
+      return 17;
     }
 
     void
@@ -95,6 +121,17 @@ namespace compax::coupling
     rotate(dealii::ArrayView<double>   history,
            const dealii::Tensor<2, 3> &R) const override;
 
+    /// Relative density at which pool packing k jams [-].
+    double
+    jamming_density(std::size_t k) const
+    {
+      return template_jamming_density[k];
+    }
+
+    /// Whether a point's committed state is a jammed RVE.
+    static bool
+    is_jammed(dealii::ArrayView<const double> history);
+
     /// Number of material points (RVEs) created so far.
     std::size_t
     n_points() const
@@ -114,11 +151,37 @@ namespace compax::coupling
     void
     catch_up(std::size_t point, double committed_step) const;
 
+    /// The pool: spec.pool as given, or drawn at density rho and
+    /// consolidated; with the jamming densities and moduli.
+    void
+    make_templates(double rho) const;
+
+    /// Draws pool_size packings at density rho and compacts each
+    /// uniaxially to its jamming pressure.
+    void
+    consolidate_templates(double rho) const;
+
+    /// Newton equilibrium of `cell` mapped affinely to F (false also
+    /// when the cell cannot take F).
+    bool
+    solve_at(dem::PeriodicBed &cell, const Eigen::Matrix3d &F) const;
+
+    /// Equilibrium of `start` deformed to F, into `cell`, with frozen
+    /// histories: from the affine predictor, else by continuation in
+    /// halved sub-steps, so the result depends on start and F only.
+    bool
+    equilibrate_at(dem::PeriodicBed       &cell,
+                   const dem::PeriodicBed &start,
+                   const Eigen::Matrix3d  &F) const;
+
     RveMaterialSpec   spec;
     dem::ContactModel model;
     // Mutable: evaluate() is const in the interface, the cells are the
     // material's own state, indexed by the point's history.
     mutable std::vector<dem::PeriodicBed> templates;
+    mutable std::vector<double>           template_jamming_density;
+    /// Axial entry of each packing's condensed tangent [Pa].
+    mutable std::vector<double>           template_modulus;
     mutable double                        template_density = -1.0;
     mutable std::vector<dem::PeriodicBed> committed;
     mutable std::vector<dem::PeriodicBed> trial;

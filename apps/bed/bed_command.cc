@@ -139,11 +139,17 @@ namespace compax::cli
       c.final_density          = prm.get_double("Final relative density");
       c.density_step           = prm.get_double("Density step");
       c.jamming_pressure       = prm.get_double("Jamming pressure");
-      c.solver                 = prm.get("Solver") == "newton-krylov"
-                                   ? dem::BedSolver::newton_krylov
-                                   : dem::BedSolver::trust_region;
-      c.newton.force_tolerance = prm.get_double("Force tolerance");
-      c.krylov.force_tolerance = c.newton.force_tolerance;
+      const std::string solver = prm.get("Solver");
+      c.solver = solver == "newton-krylov" ? dem::BedSolver::newton_krylov
+                 : solver == "trust-region"
+                   ? dem::BedSolver::trust_region
+                   : dem::BedSolver::nonlocal_trust_region;
+      c.newton.force_tolerance          = prm.get_double("Force tolerance");
+      c.krylov.force_tolerance          = c.newton.force_tolerance;
+      c.nonlocal_newton.force_tolerance = c.newton.force_tolerance;
+      c.hertz_consolidation             = prm.get_bool("Hertz consolidation");
+      if (prm.get_bool("Solver trace"))
+        c.krylov.trace = c.nonlocal_newton.trace = &std::cout;
       if (!(c.final_density > s.initial_density))
         reject_entry("Final relative density",
                      format_number(c.final_density),
@@ -228,10 +234,12 @@ namespace compax::cli
                "once with Hertz contacts and once with the nonlocal contact "
                "formulation (Eqs. 5, 9, 10, Algorithm 1 at every residual "
                "evaluation). Below the jamming pressure the bed is relaxed "
-               "by FIRE (rearrangement); above it every step is a static "
-               "equilibrium solved by Newton: the trust region with the "
-               "local stiffness at gamma + gamma_NL, or Newton-Krylov with "
-               "the exact Jacobian (Solver).\n\nWrites bed.csv (per "
+               "by FIRE (rearrangement; with Hertz contacts also for the "
+               "nonlocal run unless Hertz consolidation = false); above it "
+               "every step is a static equilibrium solved by Newton: by "
+               "default a trust region on the frozen-angle Hessian of the "
+               "nonlocal formulation, finished by Newton-Krylov with the "
+               "exact Jacobian (Solver).\n\nWrites bed.csv (per "
                "formulation and step: relative density, punch gap, forces "
                "on the six walls, mean lateral reaction, solver "
                "iterations, Algorithm 1 sweeps, coordination, largest "
@@ -303,14 +311,13 @@ namespace compax::cli
                          "or at the top of the deposit if that is higher.");
         declare_quantity(prm,
                          "Final relative density",
-                         "0.65",
+                         "0.80",
                          open(0.0, 1.5),
                          "-",
                          "In-die relative density at the end of the "
-                         "compaction. (The paper's 0.80 is in "
-                         "apps/parameters/bed_disordered.prm; the nonlocal "
-                         "Newton does not yet get past about 0.66, where the "
-                         "run stops with exit code 3 and keeps its rows.)");
+                         "compaction (the paper's 0.80). A step whose "
+                         "equilibrium is not found ends the run with exit "
+                         "code 3; the rows so far are kept.");
         declare_quantity(prm,
                          "Density step",
                          "0.005",
@@ -329,15 +336,33 @@ namespace compax::cli
                           dealii::Patterns::Anything(),
                           "Comma-separated: hertz, nonlocal. Unit: -.");
         prm.declare_entry("Solver",
-                          "newton-krylov",
+                          "nonlocal-trust-region",
                           dealii::Patterns::Selection(
-                            "trust-region|newton-krylov"),
+                            "nonlocal-trust-region|trust-region|newton-krylov"),
                           "Newton method of the jammed steps with the "
-                          "nonlocal formulation: trust-region (approximate "
-                          "symmetric K) or newton-krylov (exact Jacobian, "
-                          "GMRES, residual-norm backtracking; trust region "
-                          "as fallback). Hertz always uses the trust "
-                          "region. Unit: -.");
+                          "nonlocal formulation: nonlocal-trust-region "
+                          "(trust region on the frozen-angle Hessian "
+                          "G^T (D^-1 - C)^-1 G, matrix-free, with exact "
+                          "Newton-Krylov near equilibrium), trust-region "
+                          "(local stiffness only, approximate symmetric K) "
+                          "or newton-krylov (exact Jacobian, GMRES, "
+                          "residual-norm backtracking; trust region as "
+                          "fallback). Hertz always uses the trust region. "
+                          "Unit: -.");
+        prm.declare_entry("Solver trace",
+                          "false",
+                          dealii::Patterns::Bool(),
+                          "Print one line per iteration of the nonlocal "
+                          "trust region and Newton-Krylov (residual, trust "
+                          "radius, CG/GMRES iterations, step). Unit: -.");
+        prm.declare_entry("Hertz consolidation",
+                          "true",
+                          dealii::Patterns::Bool(),
+                          "Nonlocal formulation: consolidate with Hertz "
+                          "contacts (no Algorithm 1) until the jamming "
+                          "pressure, then switch the nonlocal terms on; "
+                          "false runs FIRE with the nonlocal forces. Unit: "
+                          "-.");
         declare_quantity(prm,
                          "Force tolerance",
                          "1e-6",
@@ -495,17 +520,18 @@ namespace compax::cli
                 const double la = a.wall_force[dem::SquareDie::upper_punch];
                 const double lb = b.wall_force[dem::SquareDie::upper_punch];
                 csv << a.relative_density << la << lb;
-                if (a.jammed && la > 0.0)
+                if (a.jammed && b.jammed && la > 0.0)
                   csv << (lb - la) / la;
                 else
                   csv.empty();
                 csv << a.lateral_force << b.lateral_force;
-                if (a.jammed && a.lateral_force > 0.0)
+                if (a.jammed && b.jammed && a.lateral_force > 0.0)
                   csv << (b.lateral_force - a.lateral_force) / a.lateral_force;
                 else
                   csv.empty();
                 csv.end_row();
-                if (a.jammed && la > 0.0 && std::abs(lb - la) / la > worst)
+                if (a.jammed && b.jammed && la > 0.0
+                    && std::abs(lb - la) / la > worst)
                   {
                     worst = std::abs(lb - la) / la;
                     at    = a.relative_density;

@@ -1,6 +1,7 @@
 #include "apps/cli/commands.h"
 
 #include "apps/bed/bed_command.h"
+#include "apps/compare/compare_command.h"
 #include "apps/contact/contact_command.h"
 #include "apps/crystal/crystal_command.h"
 #include "apps/database/database_command.h"
@@ -25,6 +26,7 @@ namespace compax::cli
     commands.push_back(make_rve_command());
     commands.push_back(make_database_command());
     commands.push_back(make_bed_command());
+    commands.push_back(make_compare_command());
     return commands;
   }
 } // namespace compax::cli

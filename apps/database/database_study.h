@@ -1,6 +1,7 @@
 #pragma once
 
 #include "apps/rve/rve_parameters.h"
+#include "coupling/hdf5_archive.h"
 #include "coupling/rve_database.h"
 #include "fem/dpc_table.h"
 
@@ -41,10 +42,22 @@ namespace compax::cli
   write_database_rows(const std::filesystem::path &folder,
                       const coupling::RveDatabase &database);
 
-  /// database.h5: the same rows and the branch summaries.
+  /// database.h5: the same rows (with deformation gradient and parent
+  /// row) and the branch summaries.
   void
   write_database_archive(const std::filesystem::path &folder,
                          const coupling::RveDatabase &database);
+
+  /// Writes the rows and branches of a database into an open archive
+  /// (what database.h5 and the checkpoints hold).
+  void
+  write_database(coupling::Hdf5ArchiveWriter &archive,
+                 const coupling::RveDatabase &database);
+
+  /// Reads what write_database() wrote, exactly; throws on a malformed
+  /// archive (catch it while the archive is open, see rve_archive.h).
+  coupling::RveDatabase
+  read_database(const coupling::Hdf5ArchiveReader &archive);
 
   /// dpc_table.csv (the DpcTable format) and dpc_table.png.
   void

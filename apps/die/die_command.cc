@@ -272,7 +272,12 @@ namespace compax::cli
                "steps (Protocol/Resume from continues an interrupted run; "
                "while running, the output is staged in .<OUTDIR>.partial-<pid> "
                "next to OUTDIR). Two particle species: Material 2 and "
-               "Packing/Material fractions.\n\n"
+               "Packing/Material fractions. Contact/Contact law = elastic "
+               "fills the die with elastic frictionless spheres instead "
+               "(no bonding), and Contact/Formulation = nonlocal then "
+               "selects the nonlocal contact formulation of Gonzalez & "
+               "Cuitino 2012 (Algorithm 1 at every residual) in place of "
+               "Hertz.\n\n"
                "Built-in default: Material 1 of Gonzalez 2018 Table 1 "
                "(R = 220 um), 400 particles in a 4 mm die, compacted to an "
                "in-die relative density of 0.87, with unloading branches (and "
@@ -370,6 +375,13 @@ namespace compax::cli
                                      study.compaction_steps);
           }
         report_materials(bed, study.model);
+        if (study.protocol.elastic)
+          std::cout << "  elastic frictionless spheres, "
+                    << (study.protocol.elastic->nonlocal
+                          ? "nonlocal contact formulation (Gonzalez & "
+                            "Cuitino 2012)"
+                          : "Hertz contacts")
+                    << std::endl;
 
         std::ofstream      csv(folder / "die.csv");
         dem::DieCompaction die(std::move(bed),

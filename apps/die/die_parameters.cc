@@ -247,6 +247,29 @@ namespace compax::cli
     prm.enter_subsection("Solver");
     declare_equilibrium_tolerances(prm);
     prm.leave_subsection();
+
+    prm.enter_subsection("Contact");
+    prm.declare_entry(
+      "Contact law",
+      "bonded-elastoplastic",
+      dealii::Patterns::Selection("bonded-elastoplastic|elastic"),
+      "bonded-elastoplastic: the bonded elasto-plastic law of Gonzalez 2018 "
+      "(Eq. 4) with the Material and Bonding entries; elastic: elastic "
+      "frictionless spheres without bonding, with the Young's modulus and "
+      "Poisson's ratio of Material (and Material 2) only (the plastic and "
+      "Bonding entries are not used; bonding surface and bonds are 0).");
+    prm.declare_entry(
+      "Formulation",
+      "hertz",
+      dealii::Patterns::Selection("hertz|nonlocal"),
+      "hertz: independent contacts (local laws); nonlocal: the nonlocal "
+      "contact formulation of Gonzalez & Cuitino 2012 (Eqs. 9, 10, "
+      "Algorithm 1: the deformation of a particle by all its contact forces "
+      "enters each contact), needs Contact law = elastic. With Contact law "
+      "= elastic the equilibria are solved by a trust region on the "
+      "frozen-angle Hessian with an exact-Jacobian Newton-Krylov finish "
+      "(consolidation with Hertz contacts), for both formulations.");
+    prm.leave_subsection();
   }
 
   DieStudy
@@ -380,6 +403,32 @@ namespace compax::cli
     dem::EquilibriumOptions equilibrium;
     get_equilibrium_tolerances(prm, equilibrium);
     prm.leave_subsection();
+
+    prm.enter_subsection("Contact");
+    const std::string law         = prm.get("Contact law");
+    const std::string formulation = prm.get("Formulation");
+    prm.leave_subsection();
+    if (formulation == "nonlocal" && law != "elastic")
+      reject_entry("Contact/Formulation",
+                   formulation,
+                   "the nonlocal formulation (Gonzalez & Cuitino 2012) is "
+                   "for elastic frictionless spheres; it needs Contact/"
+                   "Contact law = elastic (here: "
+                     + law
+                     + "; the bonded elasto-plastic law's plasticity and "
+                       "solid bridges are outside it)");
+    if (law == "elastic")
+      {
+        dem::ElasticDieOptions elastic;
+        for (const auto &m : materials)
+          elastic.materials.push_back({m.youngs_modulus, m.poisson_ratio});
+        elastic.nonlocal               = formulation == "nonlocal";
+        elastic.solver.force_tolerance = equilibrium.force_tolerance;
+        elastic.solver.step_tolerance  = equilibrium.step_tolerance;
+        elastic.solver.max_iterations
+          = std::max(elastic.solver.max_iterations, equilibrium.max_iterations);
+        protocol.elastic = elastic;
+      }
 
     return {deposition,
             model,

@@ -28,7 +28,7 @@ namespace compax::cli
   };
 
   /// Declares the subsections Material, Material 2, Bonding, Packing,
-  /// Protocol, Solver.
+  /// Protocol, Solver, Contact.
   void
   declare_die_parameters(dealii::ParameterHandler &prm);
 

@@ -46,7 +46,8 @@ namespace compax::cli
   make_multiscale_material(dealii::ParameterHandler    &prm,
                            const std::string           &model,
                            const std::filesystem::path &folder,
-                           const bool                   write_files)
+                           const bool                   write_files,
+                           const unsigned int           compaction_axis)
   {
     prm.enter_subsection("Multiscale");
     const DatabaseStudy       study = get_database_study(prm, "Multiscale/");
@@ -55,6 +56,7 @@ namespace compax::cli
     fe2.loading               = study.spec.loading;
     fe2.pool_size             = prm.get_integer("Pool size");
     fe2.tangent_floor_modulus = prm.get_double("Tangent floor modulus");
+    fe2.compaction_axis       = compaction_axis;
     prm.leave_subsection();
 
     if (model == "multiscale-fe2")

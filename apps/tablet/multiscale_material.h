@@ -27,7 +27,9 @@ namespace compax::cli
    *  - multiscale-database: builds the RVE response database now (into
    *    `folder`/database/: database.csv, database.h5, dpc_table.csv/.png)
    *    and returns the Drucker-Prager Cap fitted to it;
-   *  - multiscale-fe2: an RVE per quadrature point (coupling::RveMaterial).
+   *  - multiscale-fe2: an RVE per quadrature point (coupling::RveMaterial)
+   *    whose packings are consolidated along `compaction_axis`, the axial
+   *    row of the tablet model's stress frame.
    * Only a `write_files` caller writes the database files (rank 0 of an
    * MPI run). Throws std::runtime_error when the database's RVE does not
    * converge.
@@ -36,5 +38,6 @@ namespace compax::cli
   make_multiscale_material(dealii::ParameterHandler    &prm,
                            const std::string           &model,
                            const std::filesystem::path &folder,
-                           bool                         write_files);
+                           bool                         write_files,
+                           unsigned int                 compaction_axis);
 } // namespace compax::cli

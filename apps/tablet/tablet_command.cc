@@ -1041,8 +1041,14 @@ namespace compax::cli
               = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
             try
               {
-                setup.material = make_multiscale_material(
-                  prm, setup.multiscale_model, shared, writer);
+                // The axial row of the model's stress frame: (r, z, theta)
+                // in r-z, (x, y, z) in 3-D.
+                setup.material
+                  = make_multiscale_material(prm,
+                                             setup.multiscale_model,
+                                             shared,
+                                             writer,
+                                             setup.three_d ? 2u : 1u);
               }
             catch (const std::runtime_error &e)
               {

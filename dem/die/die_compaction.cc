@@ -84,8 +84,8 @@ namespace compax::dem
       , model(model)
       , protocol(std::move(protocol_))
       , equilibrium(equilibrium)
-      , stepper(std::make_unique<LoadStepper>(model, equilibrium))
   {
+    reset_stepper();
     auto &t = protocol.compaction_targets;
     t.insert(t.end(),
              protocol.unloading_points.begin(),
@@ -99,6 +99,22 @@ namespace compax::dem
             t.end());
     std::sort(protocol.unloading_points.begin(),
               protocol.unloading_points.end());
+  }
+
+  void
+  DieCompaction::reset_stepper()
+  {
+    if (protocol.elastic)
+      elastic = std::make_unique<ElasticDieStepper>(*protocol.elastic);
+    else
+      stepper = std::make_unique<LoadStepper>(model, equilibrium);
+  }
+
+  LoadStepResult
+  DieCompaction::advance(Bed &bed, const DieWalls &target)
+  {
+    return elastic ? elastic->advance(bed, target)
+                   : stepper->advance(bed, target);
   }
 
   void
@@ -153,18 +169,27 @@ namespace compax::dem
     d.lower_punch_pressure = d.lower_punch_force / bed.walls.punch_area();
     d.die_wall_pressure
       = bed.walls.die_present ? d.die_wall_force / bed.walls.wall_area() : 0.0;
-    const BedMeasures m   = measure(bed);
-    d.coordination_number = m.coordination_number;
-    d.bonding_surface     = m.bonding_surface;
-    d.bonds               = m.n_bonds;
-    d.bonds_formed        = r.bonds.formed;
-    d.bonds_broken        = r.bonds.broken;
-    d.residual            = r.last.relative_residual;
-    d.mean_contact_force  = s.mean_force;
-    d.iterations          = r.iterations;
-    d.cg_iterations       = r.cg_iterations;
-    d.cutbacks            = r.cutbacks;
-    d.wall_seconds        = now() - start_time;
+    if (elastic)
+      {
+        // No bonds; bed.contacts holds no state of the elastic law.
+        Bed copy              = bed;
+        d.coordination_number = elastic->coordination(copy);
+      }
+    else
+      {
+        const BedMeasures m   = measure(bed);
+        d.coordination_number = m.coordination_number;
+        d.bonding_surface     = m.bonding_surface;
+        d.bonds               = m.n_bonds;
+      }
+    d.bonds_formed       = r.bonds.formed;
+    d.bonds_broken       = r.bonds.broken;
+    d.residual           = r.last.relative_residual;
+    d.mean_contact_force = s.mean_force;
+    d.iterations         = r.iterations;
+    d.cg_iterations      = r.cg_iterations;
+    d.cutbacks           = r.cutbacks;
+    d.wall_seconds       = now() - start_time;
     return d;
   }
 
@@ -190,11 +215,14 @@ namespace compax::dem
     // gravity): record it as is.
     LoadStepResult initial;
     initial.converged = true;
-    {
-      ContactAssembler a;
-      Eigen::VectorXd  F;
-      initial.last.sums = a.residual(path, model, F);
-    }
+    if (elastic)
+      initial.last.sums = elastic->sums(path);
+    else
+      {
+        ContactAssembler a;
+        Eigen::VectorXd  F;
+        initial.last.sums = a.residual(path, model, F);
+      }
     DieRecord r0      = record(path, "compaction", 0, 0, initial);
     r0.rho_max_in_die = r0.relative_density;
     emit(r0, path);
@@ -244,7 +272,7 @@ namespace compax::dem
               on_checkpoint(path, progress_state());
             // The next step starts as a resumed run does: no secant
             // predictor, no cut-back memory.
-            stepper = std::make_unique<LoadStepper>(model, equilibrium);
+            reset_stepper();
             if (progress)
               *progress << "checkpoint after " << completed << " of "
                         << targets.size() << " compaction targets" << std::endl;
@@ -343,7 +371,8 @@ namespace compax::dem
     if (csv)
       write_csv_header(*csv);
     failure_message.clear();
-    const LoadStepResult r = stepper->equilibrate(path);
+    const LoadStepResult r
+      = elastic ? elastic->equilibrate(path) : stepper->equilibrate(path);
     check(r, "re-equilibrating the saved compaction state");
     DieRecord d      = record(path, "compaction", 0, 0, r);
     d.rho_max_in_die = d.relative_density;
@@ -358,7 +387,10 @@ namespace compax::dem
     if (targets.empty())
       return;
     Consolidation             c(protocol.consolidation);
-    const ConsolidationResult r = c.run(path, model, targets.back());
+    const ConsolidationResult r
+      = elastic
+          ? elastic->consolidate(path, targets.back(), protocol.consolidation)
+          : c.run(path, model, targets.back());
     consolidation_seconds += r.seconds;
     consolidation_iterations += r.iterations;
     assemblies += r.assemblies;
@@ -387,7 +419,7 @@ namespace compax::dem
     DieWalls target         = path.walls;
     target.upper_punch      = path.walls.lower_punch + gap_for(path, rho);
     const double         t0 = now();
-    const LoadStepResult r  = stepper->advance(path, target);
+    const LoadStepResult r  = advance(path, target);
     std::ostringstream   what;
     what << "compaction to relative density " << rho;
     check(r, what.str());
@@ -433,7 +465,7 @@ namespace compax::dem
       {
         DieWalls w = bed.walls;
         w.upper_punch += dH;
-        const LoadStepResult r = stepper->advance(bed, w);
+        const LoadStepResult r = advance(bed, w);
         check(r, "unloading");
         DieRecord d      = record(bed, "unloading", branch, step, r);
         d.rho_max_in_die = s.rho_max_in_die;
@@ -530,7 +562,7 @@ namespace compax::dem
           w.die_present = false;
         else
           w.diameter = D0 * (1.0 + protocol.ejection_step * step);
-        const LoadStepResult r = stepper->advance(bed, w);
+        const LoadStepResult r = advance(bed, w);
         check(r, "ejection");
         DieRecord d                = record(bed, "ejection", branch, step, r);
         d.rho_max_in_die           = s.rho_max_in_die;
@@ -551,7 +583,7 @@ namespace compax::dem
           {
             // The tablet left the wall: remove it.
             w.die_present           = false;
-            const LoadStepResult rf = stepper->advance(bed, w);
+            const LoadStepResult rf = advance(bed, w);
             check(rf, "ejection");
             DieRecord f      = record(bed, "ejection", branch, step + 1, rf);
             f.rho_max_in_die = s.rho_max_in_die;

@@ -1,12 +1,14 @@
 #pragma once
 
 #include "dem/die/die_analysis.h"
+#include "dem/nonlocal/elastic_die_stepper.h"
 #include "dem/solver/consolidation.h"
 #include "dem/solver/load_stepper.h"
 
 #include <functional>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,6 +48,14 @@ namespace compax::dem
     /// carries no force there).
     bool                 consolidate = true;
     ConsolidationOptions consolidation;
+    /// Elastic frictionless spheres instead of the ContactModel's bonded
+    /// elasto-plastic law: Hertz, or the nonlocal contact formulation of
+    /// Gonzalez & Cuitino 2012 (elastic->nonlocal), stepped by an
+    /// ElasticDieStepper (consolidation by FIRE with Hertz contacts, then
+    /// NonlocalTrustRegion). No bonds: bonding surface and bonds are 0, the
+    /// coordination number counts the loaded particle pairs. Empty: the
+    /// ContactModel's law (LoadStepper, TrustRegionNewton).
+    std::optional<ElasticDieOptions> elastic;
     /// Also write a progress line per unloading and ejection step.
     bool verbose = false;
     /// Hand a checkpoint (DieCompaction::on_checkpoint) every this many
@@ -291,6 +301,14 @@ namespace compax::dem
     long   consolidation_iterations = 0;
 
   private:
+    /// One load step with the law of the protocol.
+    LoadStepResult
+    advance(Bed &bed, const DieWalls &target);
+
+    /// A fresh stepper (no predictor memory).
+    void
+    reset_stepper();
+
     /// The compaction targets from index `first` on.
     void
     compact_from(std::size_t first);
@@ -320,21 +338,22 @@ namespace compax::dem
     void
     check(const LoadStepResult &r, const std::string &what);
 
-    Bed                          path;
-    const ContactModel          &model;
-    DieProtocol                  protocol;
-    EquilibriumOptions           equilibrium;
-    std::unique_ptr<LoadStepper> stepper;
-    std::vector<DieRecord>       rows;
-    std::vector<BranchSummary>   summaries;
-    std::ostream                *csv        = nullptr;
-    std::ostream                *progress   = nullptr;
-    double                       start_time = 0.0;
-    Bed                          last_good;
-    std::string                  failure_message;
-    double                       rho_jammed    = 0.0;
-    std::size_t                  completed     = 0;
-    int                          n_branches    = 0;
-    bool                         stopped_early = false;
+    Bed                                path;
+    const ContactModel                &model;
+    DieProtocol                        protocol;
+    EquilibriumOptions                 equilibrium;
+    std::unique_ptr<LoadStepper>       stepper;
+    std::unique_ptr<ElasticDieStepper> elastic;
+    std::vector<DieRecord>             rows;
+    std::vector<BranchSummary>         summaries;
+    std::ostream                      *csv        = nullptr;
+    std::ostream                      *progress   = nullptr;
+    double                             start_time = 0.0;
+    Bed                                last_good;
+    std::string                        failure_message;
+    double                             rho_jammed    = 0.0;
+    std::size_t                        completed     = 0;
+    int                                n_branches    = 0;
+    bool                               stopped_early = false;
   };
 } // namespace compax::dem

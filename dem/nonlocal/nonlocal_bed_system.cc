@@ -29,9 +29,33 @@ namespace compax::dem
     const std::vector<ElasticMaterial> &materials,
     const SquareDie                    &die,
     const NonlocalBedOptions            options)
+      : NonlocalBedSystem(particles,
+                          materials,
+                          std::make_unique<SquareDieWalls>(die),
+                          options)
+  {
+  }
+
+  NonlocalBedSystem::NonlocalBedSystem(
+    ParticleSystem                     &particles,
+    const std::vector<ElasticMaterial> &materials,
+    const DieWalls                     &die,
+    const NonlocalBedOptions            options)
+      : NonlocalBedSystem(particles,
+                          materials,
+                          std::make_unique<CylinderDieWalls>(die),
+                          options)
+  {
+  }
+
+  NonlocalBedSystem::NonlocalBedSystem(
+    ParticleSystem                     &particles,
+    const std::vector<ElasticMaterial> &materials,
+    std::unique_ptr<NonlocalWalls>      walls_,
+    const NonlocalBedOptions            options)
       : particles(particles)
       , materials(materials)
-      , die(die)
+      , walls(std::move(walls_))
       , opts(options)
       , r_mean(particles.mean_radius())
       , skin_(options.skin * particles.mean_radius())
@@ -50,8 +74,8 @@ namespace compax::dem
   {
     const std::size_t N           = particles.size();
     bool              rebuild_now = dirty || reference.size() != N;
-    for (int f = 0; f < SquareDie::n_faces && !rebuild_now; ++f)
-      rebuild_now = die.plane(f) != reference_walls[f];
+    for (int f = 0; f < walls->n_walls() && !rebuild_now; ++f)
+      rebuild_now = walls->position(f) != reference_walls[f];
     const double limit = 0.25 * skin_ * skin_;
     for (std::size_t i = 0; i < N && !rebuild_now; ++i)
       rebuild_now
@@ -78,8 +102,8 @@ namespace compax::dem
              next < candidate_pairs.size() && candidate_pairs[next].first == i;
              ++next)
           keys.push_back({i, candidate_pairs[next].second});
-        for (int f = 0; f < SquareDie::n_faces; ++f)
-          if (die.distance(f, particles.positions[i])
+        for (int f = 0; f < walls->n_walls(); ++f)
+          if (walls->distance(f, particles.positions[i])
               < particles.radii[i] + skin_)
             keys.push_back({i, static_cast<std::uint32_t>(N + f)});
       }
@@ -174,8 +198,8 @@ namespace compax::dem
       }
 
     reference = particles.positions;
-    for (int f = 0; f < SquareDie::n_faces; ++f)
-      reference_walls[f] = die.plane(f);
+    for (int f = 0; f < walls->n_walls(); ++f)
+      reference_walls[f] = walls->position(f);
     dirty = false;
     ++revision;
   }
@@ -187,7 +211,8 @@ namespace compax::dem
     F.setZero(3 * N);
     ContactSums sums;
     wall_force.fill(0.0);
-    n_loaded_ = 0;
+    n_loaded_       = 0;
+    n_loaded_pairs_ = 0;
     if (!particles.coordinates().allFinite())
       {
         F.setConstant(std::numeric_limits<double>::quiet_NaN());
@@ -219,8 +244,8 @@ namespace compax::dem
         else
           {
             const int f = static_cast<int>(k.j - N);
-            distance[c] = die.distance(f, xi);
-            normal[c]   = SquareDie::outward_normal(f);
+            distance[c] = walls->distance(f, xi);
+            normal[c]   = walls->outward_normal(f, xi);
             gamma[c]    = particles.radii[k.i] - distance[c];
           }
       }
@@ -299,17 +324,17 @@ namespace compax::dem
         const Key &k = keys[c];
         F.segment<3>(3 * k.i) += P * normal[c];
         if (k.j < N)
-          F.segment<3>(3 * k.j) -= P * normal[c];
+          {
+            F.segment<3>(3 * k.j) -= P * normal[c];
+            ++n_loaded_pairs_;
+          }
         else
           wall_force[k.j - N] += P;
         ++n_loaded_;
         sum_abs += std::abs(P);
       }
-    sums.wall_force[0] = wall_force[SquareDie::lower_punch];
-    sums.wall_force[1] = wall_force[SquareDie::upper_punch];
-    sums.wall_force[2]
-      = wall_force[SquareDie::x_lower] + wall_force[SquareDie::x_upper]
-        + wall_force[SquareDie::y_lower] + wall_force[SquareDie::y_upper];
+    for (int f = 0; f < walls->n_walls(); ++f)
+      sums.wall_force[walls->sums_slot(f)] += wall_force[f];
     sums.n_loaded = n_loaded_;
     if (n_loaded_ > 0)
       sums.mean_force = sum_abs / n_loaded_;
@@ -364,10 +389,20 @@ namespace compax::dem
           }
         else
           {
+            // k n n^T + P dn/dx (the turning normal of a curved wall).
             double *blk = K.block(K.diagonal_slot(k.i));
-            for (int r = 0; r < 3; ++r)
-              for (int s = 0; s < 3; ++s)
-                blk[3 * r + s] += stiffness[c] * normal[c][r] * normal[c][s];
+            for (int s = 0; s < 3; ++s)
+              {
+                const Eigen::Vector3d dn_s
+                  = force[c] == 0.0
+                      ? Eigen::Vector3d::Zero()
+                      : walls->normal_derivative(static_cast<int>(k.j - N),
+                                                 particles.positions[k.i],
+                                                 Eigen::Vector3d::Unit(s));
+                for (int r = 0; r < 3; ++r)
+                  blk[3 * r + s] += stiffness[c] * normal[c][r] * normal[c][s]
+                                    + force[c] * dn_s[r];
+              }
           }
       }
     return sums;
@@ -406,7 +441,8 @@ namespace compax::dem
 
   void
   NonlocalBedSystem::apply_jacobian(const Eigen::VectorXd &v,
-                                    Eigen::VectorXd       &Jv)
+                                    Eigen::VectorXd       &Jv,
+                                    const bool             turning)
   {
     const std::size_t N = particles.size();
     const std::size_t n = keys.size();
@@ -428,15 +464,17 @@ namespace compax::dem
           }
         else
           {
-            dn[c].setZero();
-            a[c] = nc.dot(v.segment<3>(3 * k.i));
+            dn[c] = walls->normal_derivative(static_cast<int>(k.j - N),
+                                             particles.positions[k.i],
+                                             v.segment<3>(3 * k.i));
+            a[c]  = nc.dot(v.segment<3>(3 * k.i));
           }
       }
     if (opts.nonlocal)
       {
         // a = d gamma + dC P.
         const auto &compliance = network.compliance();
-        for (std::size_t c = 0; c < n; ++c)
+        for (std::size_t c = 0; c < n && turning; ++c)
           for (std::size_t q = incidence_offset[c]; q < incidence_offset[c + 1];
                ++q)
             {

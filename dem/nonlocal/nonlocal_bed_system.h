@@ -2,12 +2,14 @@
 
 #include "dem/contact/nonlocal_hertz.h"
 #include "dem/neighbors/cell_grid.h"
+#include "dem/nonlocal/nonlocal_walls.h"
 #include "dem/nonlocal/square_die.h"
 #include "dem/particles/particle_system.h"
 #include "dem/solver/equilibrium_system.h"
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace compax::dem
@@ -42,10 +44,12 @@ namespace compax::dem
   };
 
   /**
-   * Elastic frictionless spheres of several materials in a square die
-   * (SquareDie: four flat die walls and two punches) as an
-   * EquilibriumSystem, with Hertz contacts or with the nonlocal contact
-   * formulation of Gonzalez & Cuitino 2012. No adhesion, no friction.
+   * Elastic frictionless spheres of several materials in a die (the
+   * square die of SquareDie: four flat die walls and two punches; or the
+   * cylindrical die of DieWalls, whose curved wall's normal turns with the
+   * particle; any NonlocalWalls) as an EquilibriumSystem, with Hertz contacts
+   * or with the nonlocal contact formulation of Gonzalez & Cuitino 2012. No
+   * adhesion, no friction.
    *
    * Contacts. The candidates are the pairs and particle-wall pairs closer
    * than the Verlet skin; the list is rebuilt when a particle moved farther
@@ -70,7 +74,9 @@ namespace compax::dem
    * apply_jacobian() gives the exact product J v = dF/dx v, including
    * d gamma_NL/dx through the linearized fixed point
    * (I - D C) dP = D (d gamma + dC P), D = diag(dP/ds), C the influence
-   * matrix, dC from the turning contact directions. J is not sparse
+   * matrix, dC from the turning contact directions (pair normals, and the
+   * normals of curved walls, dn = (I - e_r e_r^T)_xy v / r on the
+   * cylinder). J is not sparse
    * ((I - D C)^{-1} couples every contact of a connected network) and,
    * through dC, not symmetric: the nonlocal forces do not derive from a
    * potential. (At frozen angles they do: with s = gamma + C P the
@@ -79,7 +85,7 @@ namespace compax::dem
    * -P.dC P / 2 to dPhi/dx that F does not have.)
    *
    * Holds references to the particles and the die; the die may be moved
-   * between solves.
+   * between solves (the candidate list is rebuilt when a wall moved).
    */
   class NonlocalBedSystem final : public EquilibriumSystem
   {
@@ -87,6 +93,18 @@ namespace compax::dem
     NonlocalBedSystem(ParticleSystem                     &particles,
                       const std::vector<ElasticMaterial> &materials,
                       const SquareDie                    &die,
+                      NonlocalBedOptions                  options = {});
+
+    /// The cylindrical die of a Bed (walls indexed by Wall).
+    NonlocalBedSystem(ParticleSystem                     &particles,
+                      const std::vector<ElasticMaterial> &materials,
+                      const DieWalls                     &die,
+                      NonlocalBedOptions                  options = {});
+
+    /// Any wall geometry.
+    NonlocalBedSystem(ParticleSystem                     &particles,
+                      const std::vector<ElasticMaterial> &materials,
+                      std::unique_ptr<NonlocalWalls>      walls,
                       NonlocalBedOptions                  options = {});
 
     std::size_t
@@ -125,10 +143,17 @@ namespace compax::dem
 
     /**
      * Jv = J v with the exact Jacobian J = dF/dx at the state of the last
-     * residual() or assemble() call (which must have succeeded).
+     * residual() or assemble() call (which must have succeeded). With
+     * turning = false the change of the influence coefficients with the
+     * contact directions (dC) is left out: the rest, G^T (D^-1 - C)^-1 G
+     * plus the geometric terms, is symmetric, the Hessian of Phi at frozen
+     * angles (see above), and positive definite on the loaded directions
+     * wherever Algorithm 1 contracts and the geometric terms are small.
      */
     void
-    apply_jacobian(const Eigen::VectorXd &v, Eigen::VectorXd &Jv);
+    apply_jacobian(const Eigen::VectorXd &v,
+                   Eigen::VectorXd       &Jv,
+                   bool                   turning = true);
 
     /// Switches the formulation (the warm start is reset).
     void
@@ -141,8 +166,8 @@ namespace compax::dem
     }
 
     /// Sum of the normal forces on each wall at the last evaluation [N],
-    /// indexed by SquareDie::Face.
-    const std::array<double, SquareDie::n_faces> &
+    /// indexed by SquareDie::Face (square die) or Wall (cylindrical die).
+    const std::array<double, NonlocalWalls::max_walls> &
     wall_forces() const
     {
       return wall_force;
@@ -181,6 +206,14 @@ namespace compax::dem
     n_loaded() const
     {
       return n_loaded_;
+    }
+
+    /// Particle pairs (wall contacts not counted) carrying force at the
+    /// last evaluation.
+    std::size_t
+    n_loaded_pairs() const
+    {
+      return n_loaded_pairs_;
     }
 
     /// Largest gamma_NL / gamma over loaded contacts at the last evaluation
@@ -224,25 +257,25 @@ namespace compax::dem
     ContactSums
     evaluate(Eigen::VectorXd &F);
 
-    ParticleSystem              &particles;
-    std::vector<ElasticMaterial> materials;
-    const SquareDie             &die;
-    NonlocalBedOptions           opts;
-    double                       r_mean = 0.0;
-    double                       skin_  = 0.0;
+    ParticleSystem                &particles;
+    std::vector<ElasticMaterial>   materials;
+    std::unique_ptr<NonlocalWalls> walls;
+    NonlocalBedOptions             opts;
+    double                         r_mean = 0.0;
+    double                         skin_  = 0.0;
 
     // Candidate list.
-    bool                                   dirty    = true;
-    std::uint64_t                          revision = 0;
-    std::vector<Key>                       keys, old_keys;
-    std::vector<double>                    n_H;
-    std::vector<Eigen::Vector3d>           reference;
-    std::array<double, SquareDie::n_faces> reference_walls{};
-    CellGrid                               grid;
-    std::vector<ParticlePair>              candidate_pairs;
-    std::vector<std::size_t>               incidence_offset;
-    std::vector<Incidence>                 incidences;
-    std::vector<std::size_t>               particle_offset, particle_contacts;
+    bool                                         dirty    = true;
+    std::uint64_t                                revision = 0;
+    std::vector<Key>                             keys, old_keys;
+    std::vector<double>                          n_H;
+    std::vector<Eigen::Vector3d>                 reference;
+    std::array<double, NonlocalWalls::max_walls> reference_walls{};
+    CellGrid                                     grid;
+    std::vector<ParticlePair>                    candidate_pairs;
+    std::vector<std::size_t>                     incidence_offset;
+    std::vector<Incidence>                       incidences;
+    std::vector<std::size_t> particle_offset, particle_contacts;
 
     // State of the last evaluation.
     std::vector<double>          gamma, distance, gamma_nl, old_gamma_nl, force;
@@ -250,9 +283,10 @@ namespace compax::dem
     std::vector<Eigen::Vector3d> normal;
     NonlocalContactNetwork       network;
     NonlocalFixedPointResult     fixed_point_;
-    std::size_t                  total_sweeps_ = 0;
-    std::size_t                  n_loaded_     = 0;
-    std::array<double, SquareDie::n_faces> wall_force{};
+    std::size_t                  total_sweeps_   = 0;
+    std::size_t                  n_loaded_       = 0;
+    std::size_t                  n_loaded_pairs_ = 0;
+    std::array<double, NonlocalWalls::max_walls> wall_force{};
 
     // Stiffness pattern.
     std::uint64_t              pattern_revision = ~std::uint64_t(0);

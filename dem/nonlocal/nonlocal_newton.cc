@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <ostream>
 
 namespace compax::dem
 {
@@ -101,6 +102,7 @@ namespace compax::dem
     result.sums = system.assemble(F, K);
     ++result.residuals;
     double last_step = std::numeric_limits<double>::infinity();
+    int    stalled   = 0;
     for (int it = 0;; ++it)
       {
         result.relative_residual = relative(F, result.sums);
@@ -125,8 +127,18 @@ namespace compax::dem
         lu.compute(A);
         if (lu.info() != Eigen::Success)
           break;
-        result.linear_iterations += gmres(system, -F);
+        const int lin = gmres(system, -F);
+        result.linear_iterations += lin;
         ++result.iterations;
+        if (opts.trace)
+          {
+            system.apply_jacobian(s, w);
+            *opts.trace << "  nk it " << it << " rel "
+                        << result.relative_residual << " |F| " << F.norm()
+                        << " gmres " << lin << " lin.res "
+                        << (w + F).norm() / F.norm() << " step "
+                        << max_particle_norm(s) / R;
+          }
 
         // Cap every particle's move at a quarter of the skin.
         const double longest = max_particle_norm(s);
@@ -156,14 +168,27 @@ namespace compax::dem
           }
         if (!accepted)
           {
+            if (opts.trace)
+              *opts.trace << " rejected\n";
             x           = x_old;
             result.sums = system.assemble(F, K);
             ++result.residuals;
             break;
           }
-        last_step   = alpha * max_particle_norm(s);
+        last_step = alpha * max_particle_norm(s);
+        // Stagnation (a nearly singular J: huge steps cut back to nothing):
+        // give up early and let the caller go on.
+        stalled = F_trial.norm() > 0.9 * f_norm ? stalled + 1 : 0;
+        if (opts.trace)
+          *opts.trace << " alpha " << alpha << " |F_new| " << F_trial.norm()
+                      << '\n';
         result.sums = system.assemble(F, K);
         ++result.residuals;
+        if (stalled >= opts.stall_iterations)
+          {
+            result.relative_residual = relative(F, result.sums);
+            break;
+          }
       }
     return result;
   }

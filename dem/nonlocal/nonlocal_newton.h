@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseLU>
 
+#include <iosfwd>
+
 namespace compax::dem
 {
   /// Tolerances of NonlocalNewtonKrylov.
@@ -18,6 +20,10 @@ namespace compax::dem
     /// of the mean radius [-].
     double step_tolerance = 1e-4;
     int    max_iterations = 60;
+    /// Consecutive iterations that reduce |F| by less than 10 % after
+    /// which the solve gives up (near-singular J; the caller goes on with
+    /// a globally convergent method) [-].
+    int stall_iterations = 4;
     /// GMRES: Krylov dimension before a restart, total iterations, and the
     /// relative residual of each linear solve [-].
     int    restart          = 40;
@@ -26,6 +32,8 @@ namespace compax::dem
     /// Shift of the preconditioner K_approx + shift * mean diagonal (keeps
     /// rattlers' zero rows invertible) [-].
     double preconditioner_shift = 1e-6;
+    /// One line per iteration (diagnostics); null for none.
+    std::ostream *trace = nullptr;
   };
 
   /// Outcome of NonlocalNewtonKrylov::solve().

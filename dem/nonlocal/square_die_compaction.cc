@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <ostream>
 
 namespace compax::dem
@@ -22,6 +23,7 @@ namespace compax::dem
     FireRelaxation       fire;
     TrustRegionNewton    newton(options.newton);
     NonlocalNewtonKrylov krylov(options.krylov);
+    NonlocalTrustRegion  exact(options.nonlocal_newton, options.krylov);
     Eigen::VectorXd      F;
     BedCompactionResult  result;
 
@@ -46,7 +48,8 @@ namespace compax::dem
       pt.nonlocal_ratio = system.max_nonlocal_ratio();
     };
 
-    std::vector<Eigen::Vector3d> saved;
+    std::vector<Eigen::Vector3d> saved, previous, affine_positions;
+    double                       previous_dH = 0.0;
     for (int step = 0;; ++step)
       {
         const double start = solid / die.enclosed_volume();
@@ -66,12 +69,32 @@ namespace compax::dem
         for (auto &x : particles.positions)
           x[2] = z0 + (x[2] - z0) * ratio;
         die.upper_punch_height = z0 + H;
+        if (jammed && options.secant_predictor && !previous.empty()
+            && previous_dH != 0.0)
+          {
+            // Secant predictor: the last converged increment, scaled to
+            // this punch move, if it leaves a smaller residual than the
+            // affine one.
+            const double scale = (H - old.height()) / previous_dH;
+            system.residual(F);
+            const double affine
+              = F.allFinite() ? F.norm() : std::numeric_limits<double>::max();
+            affine_positions = particles.positions;
+            for (std::size_t i = 0; i < particles.size(); ++i)
+              particles.positions[i]
+                = saved[i] + scale * (saved[i] - previous[i]);
+            system.residual(F);
+            if (!(F.allFinite() && F.norm() < affine))
+              particles.positions = affine_positions;
+          }
 
         BedCompactionPoint pt;
         const std::size_t  sweeps0 = system.total_sweeps();
         bool               ok      = true;
         if (!jammed)
           {
+            if (nonlocal && options.hertz_consolidation)
+              system.set_nonlocal(false);
             const FireResult fr = fire.relax(system,
                                              options.fire_tolerance,
                                              options.fire_iterations,
@@ -85,8 +108,18 @@ namespace compax::dem
           }
         if (jammed)
           {
+            if (nonlocal && !system.options().nonlocal)
+              system.set_nonlocal(true);
             pt.jammed = true;
             bool done = false;
+            if (options.solver == BedSolver::nonlocal_trust_region && nonlocal)
+              {
+                const NonlocalTrustRegionResult tr = exact.solve(system);
+                pt.newton_iterations += tr.iterations + tr.krylov_iterations;
+                pt.rejected_steps += tr.rejected_steps;
+                pt.fire_iterations += tr.fire_iterations;
+                done = tr.converged;
+              }
             if (options.solver == BedSolver::newton_krylov && nonlocal)
               {
                 const NewtonKrylovResult nk = krylov.solve(system);
@@ -126,6 +159,11 @@ namespace compax::dem
           }
         record(pt);
         result.points.push_back(pt);
+        if (pt.jammed)
+          {
+            previous    = saved;
+            previous_dH = die.height() - old.height();
+          }
         if (progress)
           *progress << "  rho " << pt.relative_density << "  upper punch "
                     << pt.wall_force[SquareDie::upper_punch] << " N  lateral "

@@ -2,6 +2,7 @@
 
 #include "dem/nonlocal/nonlocal_bed_system.h"
 #include "dem/nonlocal/nonlocal_newton.h"
+#include "dem/nonlocal/nonlocal_trust_region.h"
 #include "dem/solver/trust_region_newton.h"
 
 #include <array>
@@ -20,7 +21,11 @@ namespace compax::dem
     trust_region,
     /// NonlocalNewtonKrylov (exact Jacobian-vector products, GMRES,
     /// residual-norm backtracking), with the trust region as fallback.
-    newton_krylov
+    newton_krylov,
+    /// NonlocalTrustRegion: trust region on the frozen-angle Hessian
+    /// (matrix-free, with the nonlocal amplification (I - D C)^-1), exact
+    /// Newton-Krylov near equilibrium.
+    nonlocal_trust_region
   };
 
   /// Settings of compact_square_die_bed().
@@ -35,12 +40,21 @@ namespace compax::dem
     double jamming_pressure = 1e5;
     /// FIRE: relative residual, iterations per step, and the force floor
     /// (fraction of p_jam pi R_mean^2 below which forces are negligible).
-    double              fire_tolerance       = 1e-3;
-    int                 fire_iterations      = 50000;
-    double              force_floor_fraction = 1e-2;
-    BedSolver           solver               = BedSolver::trust_region;
-    EquilibriumOptions  newton;
-    NewtonKrylovOptions krylov;
+    double fire_tolerance       = 1e-3;
+    int    fire_iterations      = 50000;
+    double force_floor_fraction = 1e-2;
+    /// Consolidate with Hertz contacts (gamma_NL = 0, no Algorithm 1)
+    /// until the bed jams, then switch the nonlocal terms on: below the
+    /// jamming pressure the overlaps, hence the nonlocal terms, are
+    /// negligible, and FIRE needs thousands of residuals there.
+    bool hertz_consolidation = true;
+    /// Jammed steps start from the last converged increment (secant) when
+    /// that leaves a smaller residual than the affine predictor.
+    bool                       secant_predictor = true;
+    BedSolver                  solver = BedSolver::nonlocal_trust_region;
+    EquilibriumOptions         newton;
+    NewtonKrylovOptions        krylov;
+    NonlocalTrustRegionOptions nonlocal_newton;
   };
 
   /// One converged step.

@@ -115,6 +115,14 @@ namespace compax::dem
       return opts;
     }
 
+    /// Forgets the trust radius carried over from the last solve, so that
+    /// the next solve depends on its system alone (reproducible trials).
+    void
+    reset()
+    {
+      radius = -1.0;
+    }
+
     /// The stiffness at the last evaluated state.
     const BlockSparseMatrix &
     stiffness() const

@@ -1,4 +1,5 @@
 #include "coupling/dpc_calibration.h"
+#include "fem/dpc_table.h"
 
 #include <gtest/gtest.h>
 
@@ -52,5 +53,39 @@ TEST(DpcCalibration, ShearLineThroughTwoPoints)
 TEST(DpcCalibration, StateAboveShearLineIsRejected)
 {
   EXPECT_THROW(cap_through_uniaxial_state({1e6, 20e6}, {5e6, 1.0}),
+               std::domain_error);
+}
+
+/// Table cap pressures that give the fitted caps at the plastic densities:
+/// the table's own interpolation (fem::DpcTable) returns each fitted cap
+/// at its plastic density, below, inside and above the table; with plastic
+/// densities at the rows they are the fitted caps themselves.
+TEST(DpcCalibration, CapPressuresAtRowsReproduceCapsAtPlasticDensity)
+{
+  const std::vector<double> rows = {0.70, 0.75, 0.80, 0.85};
+  const std::vector<double> cap  = {5e6, 11e6, 17e6, 26e6};
+  for (const double shift : {0.0, 0.004, 0.02})
+    {
+      std::vector<double> rho_p;
+      for (const double r : rows)
+        rho_p.push_back(r - shift);
+      const std::vector<double> y = cap_pressures_at_rows(rows, rho_p, cap);
+      compax::fem::DpcTable     t;
+      for (std::size_t k = 0; k < rows.size(); ++k)
+        t.add_row(rows[k], 1e6, 40.0, 0.8, y[k], 1e9, 0.3);
+      t.validate();
+      for (std::size_t k = 0; k < rows.size(); ++k)
+        {
+          double pb, dpb;
+          t.cap_pressure(rho_p[k], pb, dpb);
+          EXPECT_NEAR(pb, cap[k], 1e-10 * cap[k]) << shift << " " << k;
+          if (shift == 0.0)
+            EXPECT_NEAR(y[k], cap[k], 1e-10 * cap[k]);
+          else
+            EXPECT_GT(y[k], cap[k]); // the cap is reached at a lower density
+        }
+    }
+  // Two plastic densities that the table cannot tell apart.
+  EXPECT_THROW(cap_pressures_at_rows(rows, {0.69, 0.69, 0.79, 0.84}, cap),
                std::domain_error);
 }

@@ -1,0 +1,275 @@
+#include "dem/nonlocal/nonlocal_trust_region.h"
+
+#include "dem/solver/trust_region_newton.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <ostream>
+
+namespace compax::dem
+{
+  NonlocalTrustRegion::NonlocalTrustRegion(
+    const NonlocalTrustRegionOptions options,
+    const NewtonKrylovOptions        krylov_options)
+      : opts(options)
+      , krylov(krylov_options)
+  {
+  }
+
+  double
+  NonlocalTrustRegion::to_boundary(const Eigen::VectorXd &dir)
+  {
+    M.multiply(Ms, s);
+    M.multiply(Mp, dir);
+    const double ss = s.dot(Ms), sp = s.dot(Mp), pp = dir.dot(Mp);
+    if (!(pp > 0.0))
+      return 0.0;
+    const double disc = std::max(0.0, sp * sp + pp * (radius * radius - ss));
+    return (-sp + std::sqrt(disc)) / pp;
+  }
+
+  NonlocalTrustRegion::CgResult
+  NonlocalTrustRegion::steihaug(NonlocalBedSystem &system,
+                                const double       relative_tolerance)
+  {
+    const Eigen::Index n = F.size();
+    s.setZero(n);
+    r.resize(n);
+    z.resize(n);
+    p.resize(n);
+    Hp.resize(n);
+    Ms.resize(n);
+    Mp.resize(n);
+    CgResult result;
+    // Work with H / scale so that the model agrees with |s|_M.
+    const double scale = M.scale();
+    r                  = F / scale;
+    M.solve(z, r);
+    p                 = -z;
+    double       rz   = r.dot(z);
+    const double stop = relative_tolerance * relative_tolerance * rz;
+    if (rz > 0.0)
+      for (int it = 0; it < opts.max_cg_iterations; ++it)
+        {
+          result.iterations = it + 1;
+          system.apply_jacobian(p, Hp, false);
+          Hp /= scale;
+          const double curvature = p.dot(Hp);
+          if (!(curvature > 0.0))
+            {
+              s += to_boundary(p) * p;
+              result.on_boundary = true;
+              break;
+            }
+          const double alpha = rz / curvature;
+          M.multiply(Ms, s);
+          M.multiply(Mp, p);
+          const double ss = s.dot(Ms), sp = s.dot(Mp), pp = p.dot(Mp);
+          if (ss + 2.0 * alpha * sp + alpha * alpha * pp >= radius * radius)
+            {
+              s += to_boundary(p) * p;
+              result.on_boundary = true;
+              break;
+            }
+          s += alpha * p;
+          r += alpha * Hp;
+          M.solve(z, r);
+          const double rz_new = r.dot(z);
+          if (rz_new <= stop)
+            break;
+          p  = -z + (rz_new / rz) * p;
+          rz = rz_new;
+        }
+    system.apply_jacobian(s, Hp, false);
+    result.predicted_decrease = -(F.dot(s) + 0.5 * s.dot(Hp));
+    M.multiply(Ms, s);
+    result.step_norm = std::sqrt(std::max(s.dot(Ms), 0.0));
+    return result;
+  }
+
+  bool
+  NonlocalTrustRegion::clip(const NonlocalBedSystem &system)
+  {
+    const std::size_t n = system.n_particles();
+    factor.setOnes(n);
+    bool         clipped = system.limit_closing(s, factor);
+    const double cap     = 0.25 * system.skin();
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        const double len = s.segment<3>(3 * i).norm();
+        if (len * factor[i] > cap)
+          {
+            factor[i] = cap / len;
+            clipped   = true;
+          }
+      }
+    if (clipped)
+      for (std::size_t i = 0; i < n; ++i)
+        s.segment<3>(3 * i) *= factor[i];
+    return clipped;
+  }
+
+  NonlocalTrustRegionResult
+  NonlocalTrustRegion::solve(NonlocalBedSystem &system)
+  {
+    NonlocalTrustRegionResult result;
+    const double              R = system.mean_radius();
+    const double              length
+      = R * std::sqrt(static_cast<double>(system.n_particles()));
+    const double max_radius = opts.max_radius * length;
+    if (radius <= 0.0 || opts.reset_radius)
+      radius = opts.initial_radius * length;
+    radius
+      = std::clamp(radius, 1e-3 * opts.initial_radius * length, max_radius);
+
+    ContactSums sums;
+    const auto  relative = [&]() {
+      if (!F.allFinite())
+        return std::numeric_limits<double>::infinity();
+      const double fmax = max_particle_norm(F);
+      return sums.mean_force > 0.0
+                ? fmax / sums.mean_force
+                : (fmax == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
+    };
+    const auto assemble = [&]() { sums = system.assemble(F, K); };
+
+    assemble();
+    double       last_step = 0.0;
+    bool         stepped   = false;
+    const double F0        = std::max(F.norm(), 1e-300);
+    double       best      = std::numeric_limits<double>::infinity();
+    int          best_at   = 0;
+    double       krylov_at = std::numeric_limits<double>::infinity();
+    for (int it = 0;; ++it)
+      {
+        result.relative_residual = relative();
+        if (!std::isfinite(result.relative_residual))
+          break;
+        if (result.relative_residual < 0.1 * best)
+          {
+            best    = result.relative_residual;
+            best_at = it;
+          }
+        const bool force_ok = result.relative_residual <= opts.force_tolerance;
+        if (force_ok && (!stepped || last_step <= opts.step_tolerance * R))
+          {
+            result.converged = true;
+            break;
+          }
+        // Close to equilibrium: exact Newton finishes.
+        if (result.relative_residual < opts.krylov_switch
+            && result.relative_residual < 0.1 * krylov_at)
+          {
+            krylov_at                   = result.relative_residual;
+            const NewtonKrylovResult nk = krylov.solve(system);
+            result.krylov_iterations += nk.iterations;
+            if (opts.trace)
+              *opts.trace << "  tr it " << it << " newton-krylov from "
+                          << result.relative_residual << ": " << nk.iterations
+                          << " iterations, "
+                          << (nk.converged ? "converged" : "failed")
+                          << ", residual " << nk.relative_residual << '\n';
+            assemble();
+            result.relative_residual = relative();
+            if (nk.converged)
+              {
+                result.converged = true;
+                break;
+              }
+            best_at = it; // give the trust region its own chance
+          }
+        if (it - best_at >= opts.stall_iterations && opts.fire_iterations > 0)
+          {
+            // FIRE (damped dynamics) converges for the nonconservative
+            // field too, where the work measure of the trust region can
+            // cycle; ask it for two decades below the current residual.
+            const FireResult fr
+              = fire.relax(system,
+                           std::min(opts.fire_tolerance,
+                                    std::max(opts.force_tolerance,
+                                             0.01 * result.relative_residual)),
+                           opts.fire_iterations);
+            result.fire_iterations += fr.iterations;
+            if (opts.trace)
+              *opts.trace << "  tr it " << it << " stalled: FIRE "
+                          << fr.iterations << '\n';
+            assemble();
+            result.relative_residual = relative();
+            best                     = result.relative_residual;
+            best_at                  = it;
+            radius                   = opts.initial_radius * length;
+            stepped                  = false;
+            krylov_at                = std::numeric_limits<double>::infinity();
+            if (!std::isfinite(result.relative_residual))
+              break;
+          }
+        if (it >= opts.max_iterations)
+          break;
+
+        M.compute(K, opts.preconditioner_floor);
+        const double eta = std::min(opts.max_forcing, std::sqrt(F.norm() / F0))
+                           * (force_ok ? 0.1 : 1.0);
+        const CgResult sub = steihaug(system, eta);
+        result.cg_iterations += sub.iterations;
+        ++result.iterations;
+        double pred = sub.predicted_decrease, step_norm = sub.step_norm;
+        if (clip(system))
+          {
+            system.apply_jacobian(s, Hp, false);
+            pred = -(F.dot(s) + 0.5 * s.dot(Hp));
+            M.multiply(Ms, s);
+            step_norm = std::sqrt(std::max(s.dot(Ms), 0.0));
+          }
+        if (!(pred > 0.0))
+          {
+            // No decrease predicted: the residual is numerically zero in
+            // every loaded direction, or the clipped step lost it.
+            if (force_ok)
+              {
+                result.converged = true;
+                break;
+              }
+            radius *= 0.25;
+            ++result.rejected_steps;
+            if (radius < 1e-12 * R)
+              break;
+            continue;
+          }
+
+        auto x = system.coordinates();
+        x_old  = x;
+        F_old  = F;
+        x += s;
+        const ContactSums old_sums = sums;
+        assemble();
+        const double actual = -0.5 * (F_old + F).dot(s);
+        const double rho    = actual / pred;
+        if (opts.trace)
+          *opts.trace << "  tr it " << it << " rel " << result.relative_residual
+                      << " radius " << radius / length << " cg "
+                      << sub.iterations << " boundary " << sub.on_boundary
+                      << " rho " << rho << " step " << max_particle_norm(s) / R
+                      << '\n';
+        if (rho < 0.25 || !std::isfinite(rho))
+          radius = 0.25 * step_norm;
+        else if (rho > 0.75 && sub.on_boundary)
+          radius = std::min(2.0 * radius, max_radius);
+        if (rho > 0.05 && F.allFinite())
+          {
+            stepped   = true;
+            last_step = max_particle_norm(s);
+          }
+        else
+          {
+            ++result.rejected_steps;
+            x    = x_old;
+            sums = old_sums;
+            assemble();
+            if (radius < 1e-12 * length)
+              break;
+          }
+      }
+    return result;
+  }
+} // namespace compax::dem

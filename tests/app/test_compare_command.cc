@@ -1,0 +1,402 @@
+// `compax compare`: the table builder on synthetic input (linear
+// interpolation is exact for linear data, relative differences by their
+// definition), and the real executable on a tiny study: the promised
+// columns and comparison names, every relative difference recomputed from
+// its value and reference, the die and tablet studies reading back as the
+// same die (diameter, fill, initial density, frictionless walls), the
+// ejection pressure rebuilt from the tablet's own output, and bad input.
+
+#include "app_test_support.h"
+
+#include "apps/compare/compare_table.h"
+
+#include <cmath>
+#include <set>
+
+using compax::testing::AppTest;
+using compax::testing::Csv;
+
+namespace
+{
+  using compax::cli::ComparisonRow;
+  using compax::cli::DensitySeries;
+
+  constexpr double pi = 3.14159265358979323846;
+
+  /// A tiny study: 150 particles, a 3 mm die to 0.8, a 40-particle RVE.
+  const std::string tiny = "subsection Compare\n  set FE2 = false\nend\n"
+                           "subsection Die\n"
+                           "  set Die diameter = 3e-3\n"
+                           "  set Number of particles = 150\n"
+                           "  set Final relative density = 0.8\n"
+                           "  set Compaction steps = 12\n"
+                           "  set Unloading points = 0.72, 0.8\n"
+                           "  set Die-wall friction coefficient = 0.4\n"
+                           "end\n"
+                           "subsection RVE\n"
+                           "  set Number of particles = 40\n"
+                           "  set Shear steps = 4\n"
+                           "end\n"
+                           "subsection Tablet\n"
+                           "  set Radial cells = 1\n"
+                           "  set Compaction steps = 12\n"
+                           "  set Unloading steps = 6\n"
+                           "end\n";
+} // namespace
+
+TEST(CompareTable, InterpolationIsExactForLinearData)
+{
+  // y = 3 - 7 x sampled unevenly and out of order.
+  DensitySeries s;
+  for (const double x : {0.81, 0.55, 0.6, 0.73, 0.9})
+    {
+      s.x.push_back(x);
+      s.y.push_back(3.0 - 7.0 * x);
+    }
+  for (const double x : {0.55, 0.57, 0.6123, 0.7, 0.73, 0.8, 0.8999, 0.9})
+    EXPECT_NEAR(compax::cli::interpolate(s, x), 3.0 - 7.0 * x, 1e-14) << x;
+  // Within reach of an end the end segment is extended: still exact.
+  EXPECT_NEAR(compax::cli::interpolate(s, 0.5495, 1e-3),
+              3.0 - 7.0 * 0.5495,
+              1e-14);
+  EXPECT_NEAR(compax::cli::interpolate(s, 0.9008, 1e-3),
+              3.0 - 7.0 * 0.9008,
+              1e-14);
+  EXPECT_TRUE(std::isnan(compax::cli::interpolate(s, 0.9011, 1e-3)));
+  // No extrapolation.
+  EXPECT_TRUE(std::isnan(compax::cli::interpolate(s, 0.5499)));
+  EXPECT_TRUE(std::isnan(compax::cli::interpolate(s, 0.91)));
+  EXPECT_TRUE(std::isnan(compax::cli::interpolate(DensitySeries{}, 0.7)));
+}
+
+TEST(CompareTable, RowsAtTheReferenceSamplesWithRelativeDifferences)
+{
+  // Reference p = 2 (x - 0.5), compared q = 3 (x - 0.5) + 1 sampled
+  // elsewhere: both linear, so the interpolated value is exact and the
+  // relative difference is (q - p)/|p| in closed form.
+  DensitySeries p, q;
+  for (const double x : {0.5, 0.6, 0.7, 0.8, 0.95})
+    {
+      p.x.push_back(x);
+      p.y.push_back(2.0 * (x - 0.5));
+    }
+  for (const double x : {0.52, 0.66, 0.9})
+    {
+      q.x.push_back(x);
+      q.y.push_back(3.0 * (x - 0.5) + 1.0);
+    }
+  const auto rows = compax::cli::compare_series("punch_pressure", p, q);
+  // x = 0.5 has a zero reference (no relative difference): left out.
+  ASSERT_EQ(rows.size(), 4u);
+  for (const ComparisonRow &r : rows)
+    {
+      EXPECT_EQ(r.comparison, "punch_pressure");
+      EXPECT_DOUBLE_EQ(r.reference, 2.0 * (r.relative_density - 0.5));
+      if (r.relative_density > 0.9)
+        {
+          // Outside the compared samples: missing, not extrapolated.
+          EXPECT_TRUE(std::isnan(r.value));
+          EXPECT_TRUE(std::isnan(r.relative_difference()));
+          continue;
+        }
+      const double q_exact = 3.0 * (r.relative_density - 0.5) + 1.0;
+      EXPECT_NEAR(r.value, q_exact, 1e-14);
+      EXPECT_NEAR(r.relative_difference(),
+                  (q_exact - r.reference) / std::abs(r.reference),
+                  1e-13);
+    }
+  // A negative reference divides by its magnitude.
+  const ComparisonRow n{"x", 0.7, -2.0, -3.0};
+  EXPECT_DOUBLE_EQ(n.relative_difference(), -0.5);
+}
+
+TEST(CompareTable, CsvHasTheIssueColumnsAndEmptyMissingCells)
+{
+  const auto file = std::filesystem::temp_directory_path()
+                    / ("compare-table-" + std::to_string(::getpid()) + ".csv");
+  compax::cli::write_comparison_csv(
+    file,
+    {{"youngs_modulus", 0.8, 2e9, 1.5e9},
+     {"fe2_vs_database", 0.7, 1e6, std::numeric_limits<double>::quiet_NaN()}});
+  const Csv csv(file);
+  std::filesystem::remove(file);
+  EXPECT_EQ(csv.header,
+            (std::vector<std::string>{"comparison",
+                                      "relative_density",
+                                      "reference",
+                                      "value",
+                                      "relative_difference"}));
+  ASSERT_EQ(csv.rows(), 2u);
+  EXPECT_EQ(csv.text.at("comparison")[0], "youngs_modulus");
+  EXPECT_NEAR(csv.column.at("relative_difference")[0], -0.25, 1e-12);
+  EXPECT_EQ(csv.text.at("value")[1], "");
+  EXPECT_EQ(csv.text.at("relative_difference")[1], "");
+}
+
+using CompareCommand = AppTest;
+
+TEST_F(CompareCommand, TinyStudyComparesTheSameDieAndMaterial)
+{
+  write("tiny.prm", tiny);
+  const auto r = compax("compare tiny.prm -o out");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const auto out = folder / "out";
+
+  const Csv table(out / "compare.csv");
+  EXPECT_EQ(table.header,
+            (std::vector<std::string>{"comparison",
+                                      "relative_density",
+                                      "reference",
+                                      "value",
+                                      "relative_difference"}));
+  const std::set<std::string> names(table.text.at("comparison").begin(),
+                                    table.text.at("comparison").end());
+  EXPECT_EQ(names,
+            (std::set<std::string>{"youngs_modulus",
+                                   "poisson_ratio",
+                                   "punch_pressure",
+                                   "ejection_pressure",
+                                   "fe2_vs_database"}));
+  // relative_difference = (value - reference)/|reference| where there is a
+  // value; empty where there is none (FE2 was not run).
+  for (std::size_t k = 0; k < table.rows(); ++k)
+    {
+      const std::string name = table.text.at("comparison")[k];
+      if (name == "fe2_vs_database")
+        {
+          EXPECT_EQ(table.text.at("value")[k], "") << k;
+          continue;
+        }
+      ASSERT_NE(table.text.at("value")[k], "") << name << " row " << k;
+      const double ref = table.column.at("reference")[k];
+      const double val = table.column.at("value")[k];
+      EXPECT_NEAR(table.column.at("relative_difference")[k],
+                  (val - ref) / std::abs(ref),
+                  1e-9 * (1 + std::abs(val / ref)))
+        << name << " row " << k;
+    }
+
+  // The same die: diameter (force over pressure is the punch area),
+  // deposited bed = tablet fill (initial density, mass: rho H constant).
+  const Csv    die(out / "die" / "die.csv");
+  const Csv    tablet(out / "tablet-database" / "tablet.csv");
+  const double area = pi * 3e-3 * 3e-3 / 4;
+  for (std::size_t k = 1; k < die.rows(); ++k)
+    if (die.column.at("upper_punch_pressure")[k] > 0)
+      {
+        EXPECT_NEAR(die.column.at("upper_punch_force")[k]
+                      / die.column.at("upper_punch_pressure")[k],
+                    area,
+                    1e-9 * area);
+        break;
+      }
+  std::size_t loaded = 0;
+  for (std::size_t k = 0; k < tablet.rows(); ++k)
+    if (tablet.column.at("upper_punch_pressure")[k] > 0)
+      {
+        EXPECT_NEAR(tablet.column.at("upper_punch_force")[k]
+                      / tablet.column.at("upper_punch_pressure")[k],
+                    area,
+                    1e-9 * area);
+        ++loaded;
+      }
+  EXPECT_GT(loaded, 5u);
+  const double rho0 = die.column.at("relative_density")[0];
+  const double H0   = die.column.at("punch_gap")[0];
+  EXPECT_NEAR(tablet.column.at("mean_relative_density")[0], rho0, 1e-9);
+  std::size_t last_compaction = 0;
+  for (std::size_t k = 0; k < tablet.rows(); ++k)
+    {
+      if (tablet.text.at("stage")[k] != "compaction")
+        continue;
+      last_compaction = k;
+      // The tablet's punch is where the particle die's would be at the
+      // same density, rho (H0 - travel) = rho0 H0, up to the penalty
+      // contact's penetration of the punches (about p h / (100 E), a few
+      // 1e-4 of the height here).
+      const double H = H0 - tablet.column.at("upper_punch_displacement")[k];
+      EXPECT_NEAR(tablet.column.at("mean_relative_density")[k] * H
+                    / (rho0 * H0),
+                  1.0,
+                  1e-3)
+        << "tablet row " << k;
+      // Frictionless walls, as in the particle die during compaction.
+      EXPECT_EQ(tablet.column.at("die_wall_friction_force")[k], 0.0);
+    }
+  // The punch travel takes the die's bed exactly to the final density.
+  EXPECT_EQ(last_compaction, 12u);
+  EXPECT_NEAR(
+    (H0 - tablet.column.at("upper_punch_displacement")[last_compaction]) * 0.8,
+    rho0 * H0,
+    1e-9 * rho0 * H0);
+
+  // Rows against the studies' own files.
+  const Csv branches(out / "die" / "branches.csv");
+  const Csv dpc(out / "tablet-database" / "database" / "dpc_table.csv");
+  ASSERT_EQ(branches.rows(), 2u);
+  ASSERT_EQ(dpc.rows(), 2u);
+  std::size_t n_moduli = 0, n_eject = 0, n_punch = 0;
+  for (std::size_t k = 0; k < table.rows(); ++k)
+    {
+      const std::string name = table.text.at("comparison")[k];
+      const double      rho  = table.column.at("relative_density")[k];
+      if (name == "youngs_modulus")
+        {
+          ++n_moduli;
+          for (std::size_t b = 0; b < 2; ++b)
+            if (std::abs(branches.column.at("rho_max_in_die")[b] - rho) < 1e-9)
+              {
+                EXPECT_NEAR(table.column.at("reference")[k],
+                            branches.column.at("tablet_youngs_modulus")[b],
+                            1e-9 * table.column.at("reference")[k]);
+                // The RVE branched at the same density (within its strain
+                // step), and its E is taken there on the line through the
+                // two branches.
+                const auto &x = dpc.column.at("relative_density");
+                const auto &E = dpc.column.at("youngs_modulus");
+                EXPECT_NEAR(x[b], rho, 1e-3);
+                const double expected
+                  = E[0] + (E[1] - E[0]) * (rho - x[0]) / (x[1] - x[0]);
+                EXPECT_NEAR(table.column.at("value")[k],
+                            expected,
+                            1e-9 * expected);
+              }
+        }
+      if (name == "ejection_pressure")
+        {
+          ++n_eject;
+          EXPECT_NEAR(rho, 0.8, 1e-12);
+          EXPECT_NEAR(table.column.at("reference")[k],
+                      branches.column.at("ejection_pressure")[1],
+                      1e-9 * table.column.at("reference")[k]);
+          // mu times the residual wall force after unloading over the area.
+          std::size_t last = 0;
+          for (std::size_t j = 0; j < tablet.rows(); ++j)
+            if (tablet.text.at("stage")[j] == "unloading")
+              last = j;
+          ASSERT_GT(last, 0u);
+          EXPECT_EQ(tablet.column.at("upper_punch_force")[last], 0.0);
+          EXPECT_NEAR(table.column.at("value")[k],
+                      0.4 * tablet.column.at("die_wall_normal_force")[last]
+                        / area,
+                      1e-9 * table.column.at("value")[k]);
+        }
+      if (name == "punch_pressure")
+        {
+          ++n_punch;
+          bool found = false;
+          for (std::size_t j = 0; j < die.rows(); ++j)
+            if (die.text.at("stage")[j] == "compaction"
+                && std::abs(die.column.at("relative_density")[j] - rho) < 1e-9)
+              {
+                EXPECT_NEAR(table.column.at("reference")[k],
+                            die.column.at("upper_punch_pressure")[j],
+                            1e-9 * table.column.at("reference")[k]);
+                found = true;
+              }
+          EXPECT_TRUE(found) << rho;
+        }
+    }
+  EXPECT_EQ(n_moduli, 2u);
+  EXPECT_EQ(n_eject, 1u);
+  EXPECT_GT(n_punch, 3u);
+  EXPECT_TRUE(std::filesystem::exists(out / "compare.gp"));
+  EXPECT_TRUE(std::filesystem::exists(out / "compare.md"));
+}
+
+TEST_F(CompareCommand, Fe2RowsAreFilledExactlyWhereTheFe2RunGot)
+{
+  // Tiny FE2 RVEs and no step cuts: the FE2 tablet may stop (it does at the
+  // time of writing, near the jamming transition); compare must still
+  // succeed, and fe2_vs_database must hold the FE2 punch pressure at every
+  // database-mode density the FE2 run reached and nothing beyond.
+  write(
+    "fe2.prm",
+    tiny.substr(tiny.find("end\n") + 4)
+      + "subsection Compare\n  set FE2 = true\n"
+        "  set FE2 particles per RVE = 20\n"
+        "  set FE2 compaction steps = 4\n  set FE2 max step cuts = 0\nend\n");
+  const auto r = compax("compare fe2.prm -o out");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const auto          out = folder / "out";
+  const Csv           fe2(out / "tablet-fe2" / "tablet.csv");
+  const Csv           db(out / "tablet-database" / "tablet.csv");
+  const Csv           table(out / "compare.csv");
+  std::vector<double> x, y;
+  for (std::size_t k = 0; k < fe2.rows(); ++k)
+    if (fe2.text.at("stage")[k] == "compaction")
+      {
+        x.push_back(fe2.column.at("mean_relative_density")[k]);
+        y.push_back(fe2.column.at("upper_punch_pressure")[k]);
+      }
+  ASSERT_GE(x.size(), 2u);
+  std::size_t rows = 0, filled = 0;
+  for (std::size_t k = 0; k < table.rows(); ++k)
+    {
+      if (table.text.at("comparison")[k] != "fe2_vs_database")
+        continue;
+      ++rows;
+      const double rho = table.column.at("relative_density")[k];
+      // The reference is the database-mode tablet at that density.
+      bool sample = false;
+      for (std::size_t j = 0; j < db.rows(); ++j)
+        if (db.text.at("stage")[j] == "compaction"
+            && db.column.at("mean_relative_density")[j] == rho)
+          {
+            EXPECT_NEAR(table.column.at("reference")[k],
+                        db.column.at("upper_punch_pressure")[j],
+                        1e-9 * std::abs(table.column.at("reference")[k]));
+            sample = true;
+          }
+      EXPECT_TRUE(sample) << rho;
+      // 1e-3: samples this close count as the same density.
+      const bool reached = rho <= x.back() + 1e-3;
+      EXPECT_EQ(table.text.at("value")[k] != "", reached) << rho;
+      if (!reached || rho > x.back())
+        continue;
+      ++filled;
+      std::size_t j = 1;
+      while (x[j] < rho)
+        ++j;
+      const double expected
+        = y[j - 1] + (y[j] - y[j - 1]) * (rho - x[j - 1]) / (x[j] - x[j - 1]);
+      EXPECT_NEAR(table.column.at("value")[k],
+                  expected,
+                  1e-9 * std::abs(expected) + 1e-6)
+        << rho;
+    }
+  EXPECT_GT(rows, 5u);
+  EXPECT_GT(filled, 0u);
+  // compare.md says how the FE2 run went.
+  const std::string md = read(out / "compare.md");
+  EXPECT_NE(md.find("| tablet, FE2 mode | tablet-fe2/ |"), std::string::npos);
+}
+
+TEST_F(CompareCommand, FinalDensityMustBeAnUnloadingPoint)
+{
+  write("bad.prm",
+        "subsection Die\n  set Final relative density = 0.85\n"
+        "  set Unloading points = 0.75, 0.8\nend\n");
+  expect_rejected(compax("compare bad.prm -o out"), "Die/Unloading points");
+}
+
+TEST_F(CompareCommand, OneUnloadingPointIsBadInput)
+{
+  write("bad.prm", "subsection Die\n  set Unloading points = 0.87\nend\n");
+  expect_rejected(compax("compare bad.prm -o out"), "Die/Unloading points");
+}
+
+TEST_F(CompareCommand, BadFe2SwitchIsBadInput)
+{
+  write("bad.prm", "subsection Compare\n  set FE2 = maybe\nend\n");
+  expect_rejected(compax("compare bad.prm -o out"), "FE2");
+}
+
+TEST_F(CompareCommand, DieSettingsAreCheckedBeforeAnyRun)
+{
+  // A die narrower than two particle diameters: the particle study rejects
+  // it, before compare writes anything.
+  write("bad.prm", "subsection Die\n  set Die diameter = 5e-4\nend\n");
+  expect_rejected(compax("compare bad.prm -o out"),
+                  "entry 'Die/Die diameter' = 0.0005");
+}

@@ -1,0 +1,237 @@
+// The nonlocal contact formulation (Gonzalez & Cuitino 2012) in the
+// cylindrical die of `compax die`: the exact Jacobian with the turning
+// normal of the curved die wall against central finite differences of the
+// residual, a chain of spheres across the die against the closed form of
+// Eqs. (10), (11) (solved here by bisection), and the die protocol with
+// elastic spheres: every converged state within its residual of the
+// punch-force balance.
+
+#include "dem/die/die_compaction.h"
+#include "dem/die/die_setup.h"
+#include "dem/nonlocal/elastic_die_stepper.h"
+#include "dem/nonlocal/nonlocal_bed_system.h"
+#include "dem/nonlocal/nonlocal_trust_region.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+  using namespace compax::dem;
+
+  constexpr double pi = 3.14159265358979323846;
+
+  const std::vector<ElasticMaterial> two_materials{{19e9, 0.30}, {7e9, 0.20}};
+
+  struct CylinderCluster
+  {
+    ParticleSystem particles;
+    DieWalls       die;
+  };
+
+  /// A ring of six spheres pressed against the curved die wall (overlap
+  /// ~1.5 % of R) and against a centre sphere and each other (~2 %), all
+  /// between the two punches (~1 %), with random perturbations.
+  CylinderCluster
+  make_ring(const unsigned int seed)
+  {
+    std::mt19937                           gen(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    CylinderCluster                        c;
+    const double                           R = 100e-6, r0 = 1.98 * R;
+    const auto                             jitter
+      = [&]() { return Eigen::Vector3d(u(gen), u(gen), u(gen)) * 3e-3 * R; };
+    c.particles.add(Eigen::Vector3d(0.01 * R, -0.02 * R, 0) + jitter(),
+                    R * (1.0 + 0.01 * u(gen)),
+                    0);
+    for (int k = 0; k < 6; ++k)
+      {
+        const double t = k * pi / 3.0 + 0.1;
+        c.particles.add(Eigen::Vector3d(r0 * std::cos(t), r0 * std::sin(t), 0)
+                          + jitter(),
+                        R * (1.0 + 0.01 * u(gen)),
+                        k % 2);
+      }
+    c.die.diameter    = 2.0 * 2.965 * R;
+    c.die.lower_punch = -0.99 * R;
+    c.die.upper_punch = 0.99 * R;
+    return c;
+  }
+
+  Eigen::VectorXd
+  central_difference(NonlocalBedSystem     &system,
+                     const Eigen::VectorXd &v,
+                     const double           h)
+  {
+    auto                  x  = system.coordinates();
+    const Eigen::VectorXd x0 = x;
+    Eigen::VectorXd       Fp, Fm;
+    x = x0 + h * v;
+    system.residual(Fp);
+    x = x0 - h * v;
+    system.residual(Fm);
+    x = x0;
+    return (Fp - Fm) / (2 * h);
+  }
+
+  TEST(NonlocalCylinderDie, JacobianWithCurvedWallIsCentralDifference)
+  {
+    for (const bool nonlocal : {false, true})
+      for (unsigned int seed : {1u, 4u})
+        {
+          CylinderCluster    c = make_ring(seed);
+          NonlocalBedOptions o;
+          o.nonlocal                   = nonlocal;
+          o.fixed_point_tolerance      = 1e-18;
+          o.max_fixed_point_iterations = 100000;
+          NonlocalBedSystem system(c.particles, two_materials, c.die, o);
+          Eigen::VectorXd   F, Jv, Kv;
+          BlockSparseMatrix K;
+          system.assemble(F, K);
+          ASSERT_TRUE(F.allFinite());
+          // The ring is pressed against the curved wall, all six spheres.
+          ASSERT_GT(system.wall_forces()[int(Wall::die)], 0.0);
+          ASSERT_GE(system.n_loaded(), 6u + 6u + 6u + 2u * 7u);
+          std::mt19937                     gen(seed);
+          std::normal_distribution<double> normal;
+          Eigen::VectorXd                  v(3 * c.particles.size());
+          for (Eigen::Index k = 0; k < v.size(); ++k)
+            v[k] = normal(gen);
+          system.apply_jacobian(v, Jv);
+          const Eigen::VectorXd fd
+            = central_difference(system, v, 1e-8 * 100e-6);
+          system.residual(F);
+          EXPECT_LE((Jv - fd).norm(), 1e-6 * fd.norm())
+            << "nonlocal " << nonlocal << " seed " << seed;
+          // Hertz: the assembled K (local stiffness, pair and curved-wall
+          // geometric terms) is the exact Jacobian.
+          if (!nonlocal)
+            {
+              Kv.resize(v.size());
+              K.vmult(Kv, v);
+              EXPECT_LE((Kv - fd).norm(), 1e-6 * fd.norm()) << seed;
+            }
+        }
+  }
+
+  /// P = n_w (Delta / 2N + c P)^{3/2} (Eqs. 10, 11 for a chain of N equal
+  /// spheres between rigid walls approaching by Delta), lower root by
+  /// bisection.
+  double
+  chain_force(unsigned int n, double R, double E, double nu, double Delta)
+  {
+    const double n_w = 4.0 / 3.0 * E / (1 - nu * nu) * std::sqrt(R);
+    const double c   = (1 + nu) * (3 - 2 * nu) / (4 * pi * R * E);
+    const double g   = Delta / (2.0 * n);
+    double       lo = n_w * std::pow(g, 1.5), hi = lo;
+    while (hi - n_w * std::pow(g + c * hi, 1.5) < 0)
+      hi *= 1.01;
+    for (int i = 0; i < 200; ++i)
+      {
+        const double mid = 0.5 * (lo + hi);
+        (mid - n_w * std::pow(g + c * mid, 1.5) < 0 ? lo : hi) = mid;
+      }
+    return 0.5 * (lo + hi);
+  }
+
+  TEST(NonlocalCylinderDie, ChainAcrossTheDieReachesClosedForm)
+  {
+    // N spheres on a diameter of the die, squeezed by the curved wall
+    // (die diameter 2NR - Delta), punches far away; the middle spheres
+    // start off their equilibrium. The wall law is that of a flat (the
+    // die's curvature is neglected in it, as for the bonded law).
+    const double                       R = 0.01, E = 1.85e6, nu = 0.46;
+    const std::vector<ElasticMaterial> rubber{{E, nu}};
+    for (const unsigned int n : {2u, 3u})
+      for (const double eps : {0.002, 0.02})
+        for (const bool nonlocal : {false, true})
+          {
+            const double   Delta = 2.0 * n * R * eps;
+            ParticleSystem p;
+            DieWalls       die;
+            die.diameter    = 2.0 * n * R - Delta;
+            die.lower_punch = -5 * R;
+            die.upper_punch = 5 * R;
+            for (unsigned int k = 0; k < n; ++k)
+              {
+                double x = (k + 0.5 - 0.5 * n) * die.diameter / n;
+                if (k > 0 && k + 1 < n)
+                  x += 0.2 * Delta / n;
+                p.add(Eigen::Vector3d(x, 0, 0), R, 0);
+              }
+            NonlocalBedOptions o;
+            o.nonlocal = nonlocal;
+            NonlocalBedSystem               system(p, rubber, die, o);
+            NonlocalTrustRegion             solver;
+            const NonlocalTrustRegionResult r = solver.solve(system);
+            ASSERT_TRUE(r.converged) << n << ' ' << eps << ' ' << nonlocal;
+            Eigen::VectorXd F;
+            system.residual(F);
+            const double P = nonlocal
+                               ? chain_force(n, R, E, nu, Delta)
+                               : 4.0 / 3.0 * E / (1 - nu * nu) * std::sqrt(R)
+                                   * std::pow(Delta / (2.0 * n), 1.5);
+            // Two wall contacts, one at each end of the chain.
+            EXPECT_NEAR(system.wall_forces()[int(Wall::die)], 2 * P, 2e-6 * P)
+              << n << ' ' << eps << ' ' << nonlocal;
+            EXPECT_EQ(system.wall_forces()[int(Wall::upper_punch)], 0.0);
+            EXPECT_EQ(system.n_loaded(), n + 1);
+          }
+  }
+
+  TEST(NonlocalCylinderDie, ElasticDieProtocolBalancesPunchForces)
+  {
+    DepositionParameters dp;
+    dp.n_particles         = 40;
+    dp.die_diameter        = 1e-3;
+    dp.sizes.median_radius = 100e-6;
+    dp.seed                = 2;
+    const Bed bed          = fill_die(dp);
+    for (const bool nonlocal : {false, true})
+      {
+        DieProtocol protocol;
+        protocol.compaction_targets
+          = density_targets(bed.relative_density(), 0.62, 5);
+        protocol.unloading_points = {0.62};
+        ElasticDieOptions elastic;
+        elastic.materials = {{10e9, 0.3}};
+        elastic.nonlocal  = nonlocal;
+        protocol.elastic  = elastic;
+        // The bonded law is not used with elastic spheres.
+        const ContactModel model(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
+                                 1.26e6);
+        DieCompaction      die(bed, model, protocol);
+        std::ostringstream csv;
+        die.set_output(&csv, nullptr);
+        ASSERT_NO_THROW(die.run()) << nonlocal;
+        ASSERT_GT(die.jamming_density(), 0.0);
+        const double tol     = NonlocalTrustRegionOptions{}.force_tolerance;
+        bool         reached = false, unloaded = false;
+        for (const DieRecord &r : die.records())
+          {
+            if (r.stage == "compaction" && r.step == 0)
+              continue; // the deposit as filled (no equilibrium solve)
+            // Sum over particles of F_z = P_upper - P_lower, and
+            // |sum F_i| <= N max |F_i| = N residual mean |P|.
+            EXPECT_LE(r.residual, tol) << r.stage << ' ' << r.step;
+            EXPECT_LE(std::abs(r.upper_punch_force - r.lower_punch_force),
+                      40 * r.residual * r.mean_contact_force
+                        + 1e-12 * r.upper_punch_force)
+              << r.stage << ' ' << r.step;
+            EXPECT_EQ(r.bonds, 0u);
+            reached |= r.stage == "compaction"
+                       && std::abs(r.relative_density - 0.62) < 1e-12
+                       && r.upper_punch_force > 0.0;
+            unloaded |= r.stage == "unloading" && r.upper_punch_force <= 0.0;
+          }
+        EXPECT_TRUE(reached) << nonlocal;
+        EXPECT_TRUE(unloaded) << nonlocal;
+        ASSERT_EQ(die.branches().size(), 1u);
+        EXPECT_LT(die.branches()[0].rho_min_in_die, 0.62);
+      }
+  }
+} // namespace
