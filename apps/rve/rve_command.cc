@@ -208,7 +208,12 @@ namespace compax::cli
                "moduli.png, snapshots/*.vtu with snapshots.pvd, and "
                "checkpoints/rve.h5 if asked. With Size study/Cell sizes: one "
                "run per cell in size-<N>/, rve_size_study.csv and "
-               "rve_size_spread.csv (Giannis 2021 Sec. 4.1).\n\nBuilt-in "
+               "rve_size_spread.csv (Giannis 2021 Sec. 4.1). Contact/Contact "
+               "law = elastic packs elastic frictionless spheres instead (no "
+               "bonding, no tangents: moduli.csv stays empty), and "
+               "Contact/Formulation = nonlocal then selects the nonlocal "
+               "contact formulation of Gonzalez & Cuitino 2012 in place of "
+               "Hertz.\n\nBuilt-in "
                "default: 200 spheres of Material 1 of Gonzalez 2018 Table 1 "
                "(E = 5 GPa, nu = 0.25, kappa = 150 MPa, R = 220 um, K_Ic = "
                "1.26 MPa m^1/2), uniaxial strain from a relative density of "
@@ -233,6 +238,13 @@ namespace compax::cli
           const std::filesystem::path &folder) const override
       {
         const RveStudy study = get_rve_study(prm);
+        if (study.elastic)
+          std::cout << "Elastic frictionless spheres, "
+                    << (study.elastic->nonlocal
+                          ? "nonlocal contact formulation (Gonzalez & "
+                            "Cuitino 2012)"
+                          : "Hertz contacts")
+                    << std::endl;
         if (!study.cell_sizes.empty())
           return run_size_study(study, folder);
         if (!study.resume_from.empty())

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "dem/rve/homogenization.h"
+#include "dem/rve/nonlocal_rve_loading.h"
 #include "dem/rve/periodic_packing.h"
 #include "dem/rve/rve_loading.h"
 #include "dem/solver/contact_model.h"
@@ -8,6 +9,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -67,7 +69,11 @@ namespace compax::cli
     /// Particle counts of a cell-size study; empty: one run.
     std::vector<std::size_t> cell_sizes;
 
-    dem::RveLoadingOptions loading;
+    /// Elastic frictionless spheres (Contact/Contact law = elastic): Hertz
+    /// or the nonlocal formulation of Gonzalez & Cuitino 2012, stepped by
+    /// NonlocalRveLoading; empty: the bonded elasto-plastic law.
+    std::optional<dem::NonlocalRveOptions> elastic;
+    dem::RveLoadingOptions                 loading;
 
     int         checkpoint_interval = 0;
     int         stop_after          = 0;

@@ -111,7 +111,7 @@ namespace compax::cli
     }
 
     void
-    plot(const std::filesystem::path &folder)
+    plot(const std::filesystem::path &folder, const bool with_moduli)
     {
       render_png(folder,
                  "stress_strain.gp",
@@ -127,6 +127,8 @@ namespace compax::cli
                  "(-column('sigma_yy')/1e6) with linespoints pt 4 ps 0.4 "
                  "title '-sigma_{yy}'\n",
                  "stress_strain.png");
+      if (!with_moduli)
+        return;
       render_png(folder,
                  "moduli.gp",
                  "set datafile separator ','\nset datafile columnheaders\n"
@@ -355,6 +357,11 @@ namespace compax::cli
     const std::uint64_t n_particles     = bed.particles.size();
 
     auto loading = std::make_unique<dem::RveLoading>(model, study.loading);
+    // Elastic spheres (Hertz or nonlocal): their own stepper, stress and
+    // coordination; no tangents.
+    std::unique_ptr<dem::NonlocalRveLoading> elastic;
+    if (study.elastic)
+      elastic = std::make_unique<dem::NonlocalRveLoading>(*study.elastic);
     // F_k F_{k-1}^{-1} - I of the last step (the direction of the trial
     // state of a finite-difference check).
     Eigen::Matrix3d last_increment = Eigen::Matrix3d::Zero();
@@ -371,9 +378,18 @@ namespace compax::cli
                             const dem::RveStepResult *r,
                             double                    step_seconds) {
       std::vector<double>   row(n_rve, nan);
-      const Eigen::Matrix3d eps   = dem::logarithmic_strain(bed.deformation);
-      const Eigen::Matrix3d sigma = dem::love_weber_stress(bed);
-      const RveMeasures     m     = measure_rve(bed);
+      const Eigen::Matrix3d eps = dem::logarithmic_strain(bed.deformation);
+      const Eigen::Matrix3d sigma
+        = elastic ? elastic->stress(bed) : dem::love_weber_stress(bed);
+      RveMeasures m;
+      if (elastic)
+        {
+          m.coordination_number           = elastic->coordination(bed);
+          m.coordination_without_rattlers = nan;
+          m.rattler_fraction              = nan;
+        }
+      else
+        m = measure_rve(bed);
       auto set = [&](const char *name, double v) { row[rve_column(name)] = v; };
       set("step", step);
       set("stage", unloading ? 1.0 : 0.0);
@@ -410,8 +426,10 @@ namespace compax::cli
     // Tangents and moduli at the current state (jammed cells only: a loose
     // cell has no stiffness); the finite-difference check if asked.
     const auto moduli = [&](int step, bool unloading, bool check) {
-      // A loose cell has no stiffness; a bonded cell in tension has.
-      if (std::abs(dem::mean_pressure(bed)) < study.loading.jamming_pressure)
+      // A loose cell has no stiffness; a bonded cell in tension has. The
+      // condensed tangent is that of the bonded law.
+      if (elastic
+          || std::abs(dem::mean_pressure(bed)) < study.loading.jamming_pressure)
         return;
       std::vector<double> row(n_mod, nan);
       auto                set
@@ -569,6 +587,8 @@ namespace compax::cli
           bed.contacts.rebuild(bed.particles, bed.cell, model);
           loading = std::make_unique<dem::RveLoading>(model, study.loading);
           tangent = std::make_unique<dem::TangentCalculator>();
+          if (study.elastic)
+            elastic = std::make_unique<dem::NonlocalRveLoading>(*study.elastic);
         }
       return stop;
     };
@@ -603,12 +623,14 @@ namespace compax::cli
     const auto advance = [&](bool                   unloading,
                              const Eigen::Matrix3d &target,
                              const Eigen::Matrix3d *increment) {
-      const auto               t0      = Clock::now();
-      const Eigen::Matrix3d    F_prev  = bed.deformation;
-      const dem::RveStepResult r       = increment
-                                           ? loading->apply_strain(bed, *increment)
-                                           : loading->deform_to(bed, target);
-      const double             seconds = seconds_since(t0);
+      const auto               t0     = Clock::now();
+      const Eigen::Matrix3d    F_prev = bed.deformation;
+      const dem::RveStepResult r
+        = elastic ? (increment ? elastic->apply_strain(bed, *increment)
+                               : elastic->deform_to(bed, target))
+                  : (increment ? loading->apply_strain(bed, *increment)
+                               : loading->deform_to(bed, target));
+      const double seconds = seconds_since(t0);
       if (!r.converged)
         return false;
       last_increment
@@ -663,8 +685,14 @@ namespace compax::cli
           const auto &row = progress.rows.back();
           if (row[c_stage] == 0.0)
             return false;
-          return study.path == RvePath::uniaxial ? row[c_szz] >= 0.0
-                                                 : row[c_p] <= 0.0;
+          // Elastic spheres unload to zero stress asymptotically: the
+          // relaxation of a loose cell resolves stresses down to its force
+          // floor, about force_floor_fraction times the jamming pressure.
+          const double resolution = elastic ? study.loading.force_floor_fraction
+                                                * study.loading.jamming_pressure
+                                            : 0.0;
+          return study.path == RvePath::uniaxial ? row[c_szz] >= -resolution
+                                                 : row[c_p] <= resolution;
         };
         while (!stop && study.unload && out.code == success
                && loading_done == loading_steps && !unloaded()
@@ -709,7 +737,7 @@ namespace compax::cli
       }
 
     write_tables();
-    plot(folder);
+    plot(folder, !study.elastic);
     timing.total = seconds_since(started);
     std::cout << "Cell of " << n_particles << " particles: " << timing.n_steps
               << " steps, "

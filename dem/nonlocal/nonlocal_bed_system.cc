@@ -14,14 +14,59 @@ namespace compax::dem
   {
     constexpr double pi = 3.14159265358979323846;
 
+    template <typename Key>
     bool
-    less(const std::uint32_t i1,
-         const std::uint32_t j1,
-         const std::uint32_t i2,
-         const std::uint32_t j2)
+    less(const Key &a, const Key &b)
     {
-      return i1 < i2 || (i1 == i2 && j1 < j2);
+      if (a.i != b.i)
+        return a.i < b.i;
+      if (a.j != b.j)
+        return a.j < b.j;
+      return a.image < b.image;
     }
+
+    /// No walls (a periodic cell).
+    class NoWalls final : public NonlocalWalls
+    {
+    public:
+      int
+      n_walls() const override
+      {
+        return 0;
+      }
+
+      double
+      distance(int, const Eigen::Vector3d &) const override
+      {
+        return std::numeric_limits<double>::infinity();
+      }
+
+      Eigen::Vector3d
+      outward_normal(int, const Eigen::Vector3d &) const override
+      {
+        return Eigen::Vector3d::Zero();
+      }
+
+      Eigen::Vector3d
+      normal_derivative(int,
+                        const Eigen::Vector3d &,
+                        const Eigen::Vector3d &) const override
+      {
+        return Eigen::Vector3d::Zero();
+      }
+
+      double
+      position(int) const override
+      {
+        return 0.0;
+      }
+
+      int
+      sums_slot(int) const override
+      {
+        return 2;
+      }
+    };
   } // namespace
 
   NonlocalBedSystem::NonlocalBedSystem(
@@ -62,6 +107,19 @@ namespace compax::dem
   {
   }
 
+  NonlocalBedSystem::NonlocalBedSystem(
+    ParticleSystem                     &particles,
+    const std::vector<ElasticMaterial> &materials,
+    const PeriodicCell                 &cell_,
+    const NonlocalBedOptions            options)
+      : NonlocalBedSystem(particles,
+                          materials,
+                          std::make_unique<NoWalls>(),
+                          options)
+  {
+    cell = &cell_;
+  }
+
   void
   NonlocalBedSystem::set_nonlocal(const bool nonlocal)
   {
@@ -76,6 +134,8 @@ namespace compax::dem
     bool              rebuild_now = dirty || reference.size() != N;
     for (int f = 0; f < walls->n_walls() && !rebuild_now; ++f)
       rebuild_now = walls->position(f) != reference_walls[f];
+    if (cell && !rebuild_now)
+      rebuild_now = cell->lattice() != reference_lattice;
     const double limit = 0.25 * skin_ * skin_;
     for (std::size_t i = 0; i < N && !rebuild_now; ++i)
       rebuild_now
@@ -91,10 +151,19 @@ namespace compax::dem
     old_keys.swap(keys);
     old_gamma_nl.swap(gamma_nl);
     keys.clear();
-    grid.find_pairs(particles.positions,
-                    particles.radii,
-                    skin_,
-                    candidate_pairs);
+    if (cell)
+      {
+        periodic_grid.find_pairs(
+          *cell, particles.positions, particles.radii, skin_, image_pairs);
+        for (const ImagePair &q : image_pairs)
+          keys.push_back({q.i, q.j, q.image});
+        candidate_pairs.clear();
+      }
+    else
+      grid.find_pairs(particles.positions,
+                      particles.radii,
+                      skin_,
+                      candidate_pairs);
     std::size_t next = 0;
     for (std::uint32_t i = 0; i < N; ++i)
       {
@@ -143,9 +212,9 @@ namespace compax::dem
       for (std::size_t c = 0, o = 0; c < n && o < old_keys.size();)
         {
           const Key &k = keys[c], &ko = old_keys[o];
-          if (less(ko.i, ko.j, k.i, k.j))
+          if (less(ko, k))
             ++o;
-          else if (less(k.i, k.j, ko.i, ko.j))
+          else if (less(k, ko))
             ++c;
           else
             gamma_nl[c++] = old_gamma_nl[o++];
@@ -200,6 +269,8 @@ namespace compax::dem
     reference = particles.positions;
     for (int f = 0; f < walls->n_walls(); ++f)
       reference_walls[f] = walls->position(f);
+    if (cell)
+      reference_lattice = cell->lattice();
     dirty = false;
     ++revision;
   }
@@ -235,10 +306,13 @@ namespace compax::dem
         const Eigen::Vector3d &xi = particles.positions[k.i];
         if (k.j < N)
           {
-            const Eigen::Vector3d d    = particles.positions[k.j] - xi;
-            const double          dist = d.norm();
-            distance[c]                = dist;
-            normal[c]                  = d / dist;
+            const Eigen::Vector3d d
+              = cell ? Eigen::Vector3d(particles.positions[k.j]
+                                       + cell->image_offset(k.image) - xi)
+                     : Eigen::Vector3d(particles.positions[k.j] - xi);
+            const double dist = d.norm();
+            distance[c]       = dist;
+            normal[c]         = d / dist;
             gamma[c] = particles.radii[k.i] + particles.radii[k.j] - dist;
           }
         else
@@ -534,6 +608,20 @@ namespace compax::dem
         if (k.j < N)
           Jv.segment<3>(3 * k.j) -= t;
       }
+  }
+
+  Eigen::Matrix3d
+  NonlocalBedSystem::stress() const
+  {
+    Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
+    if (!cell)
+      return S;
+    const std::size_t N = particles.size();
+    for (std::size_t c = 0; c < keys.size() && c < force.size(); ++c)
+      if (keys[c].j < N && force[c] != 0.0)
+        S.noalias()
+          -= (force[c] * distance[c]) * normal[c] * normal[c].transpose();
+    return S / cell->volume();
   }
 
   double

@@ -5,6 +5,7 @@
 #include "dem/nonlocal/nonlocal_walls.h"
 #include "dem/nonlocal/square_die.h"
 #include "dem/particles/particle_system.h"
+#include "dem/periodic/periodic_pairs.h"
 #include "dem/solver/equilibrium_system.h"
 
 #include <array>
@@ -101,6 +102,18 @@ namespace compax::dem
                       const DieWalls                     &die,
                       NonlocalBedOptions                  options = {});
 
+    /**
+     * Spheres in a periodic cell without walls (an RVE at a fixed lattice;
+     * positions unwrapped): a pair may touch through a lattice image,
+     * x_j - x_i + H n, each image its own contact. Every periodic direction
+     * must be wider than 2 R_max plus the skin (PeriodicCellGrid). The
+     * lattice may change between solves.
+     */
+    NonlocalBedSystem(ParticleSystem                     &particles,
+                      const std::vector<ElasticMaterial> &materials,
+                      const PeriodicCell                 &cell,
+                      NonlocalBedOptions                  options = {});
+
     /// Any wall geometry.
     NonlocalBedSystem(ParticleSystem                     &particles,
                       const std::vector<ElasticMaterial> &materials,
@@ -173,6 +186,12 @@ namespace compax::dem
       return wall_force;
     }
 
+    /// Love-Weber stress of the contact forces at the last evaluation,
+    /// sigma = -(1/V) sum_c P_c d_c (x) n_c (d_c the branch vector, tension
+    /// positive) over the cell volume V [Pa]; zero without a periodic cell.
+    Eigen::Matrix3d
+    stress() const;
+
     /// Algorithm 1 at the last evaluation.
     const NonlocalFixedPointResult &
     fixed_point() const
@@ -229,11 +248,13 @@ namespace compax::dem
     }
 
   private:
-    /// A candidate: particle i and particle j > i, or wall j - N.
+    /// A candidate: particle i and particle j > i (through the lattice
+    /// image `image` in a periodic cell), or wall j - N.
     struct Key
     {
       std::uint32_t i;
       std::uint32_t j;
+      LatticeImage  image = {0, 0, 0};
     };
 
     /// An incidence of contacts c and d on the deformable particle p:
@@ -260,6 +281,10 @@ namespace compax::dem
     ParticleSystem                &particles;
     std::vector<ElasticMaterial>   materials;
     std::unique_ptr<NonlocalWalls> walls;
+    const PeriodicCell            *cell = nullptr;
+    Eigen::Matrix3d                reference_lattice;
+    PeriodicCellGrid               periodic_grid;
+    std::vector<ImagePair>         image_pairs;
     NonlocalBedOptions             opts;
     double                         r_mean = 0.0;
     double                         skin_  = 0.0;

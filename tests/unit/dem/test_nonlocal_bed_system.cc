@@ -163,7 +163,7 @@ namespace
           Cluster            c = make_cluster(seed);
           NonlocalBedOptions o;
           o.nonlocal                   = nonlocal;
-          o.fixed_point_tolerance      = 1e-18;
+          o.fixed_point_tolerance      = 1e-15;
           o.max_fixed_point_iterations = 100000;
           NonlocalBedSystem system(c.particles, two_materials, c.die, o);
           Eigen::VectorXd   F, Jv, Kv;
@@ -198,7 +198,7 @@ namespace
     // so no potential exists (documented in NonlocalBedSystem).
     Cluster            c = make_cluster(7);
     NonlocalBedOptions o;
-    o.fixed_point_tolerance = 1e-18;
+    o.fixed_point_tolerance = 1e-15;
     NonlocalBedSystem system(c.particles, two_materials, c.die, o);
     Eigen::VectorXd   F, Ju, Jv;
     system.residual(F);

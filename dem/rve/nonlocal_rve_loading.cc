@@ -1,0 +1,155 @@
+#include "dem/rve/nonlocal_rve_loading.h"
+
+#include "dem/solver/trust_region_newton.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace compax::dem
+{
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+  }
+
+  NonlocalRveLoading::NonlocalRveLoading(NonlocalRveOptions options)
+      : opts(std::move(options))
+      , solver(opts.solver, opts.krylov)
+  {
+  }
+
+  NonlocalBedOptions
+  NonlocalRveLoading::bed_options(const bool nonlocal) const
+  {
+    NonlocalBedOptions o = opts.bed;
+    o.nonlocal           = nonlocal;
+    return o;
+  }
+
+  Eigen::Matrix3d
+  NonlocalRveLoading::stress(PeriodicBed &bed) const
+  {
+    NonlocalBedSystem system(bed.particles,
+                             opts.materials,
+                             bed.cell,
+                             bed_options(opts.nonlocal));
+    Eigen::VectorXd   F;
+    system.residual(F);
+    return system.stress();
+  }
+
+  double
+  NonlocalRveLoading::coordination(PeriodicBed &bed) const
+  {
+    NonlocalBedSystem system(bed.particles,
+                             opts.materials,
+                             bed.cell,
+                             bed_options(opts.nonlocal));
+    Eigen::VectorXd   F;
+    system.residual(F);
+    return bed.particles.size() > 0
+             ? 2.0 * static_cast<double>(system.n_loaded_pairs())
+                 / static_cast<double>(bed.particles.size())
+             : 0.0;
+  }
+
+  bool
+  NonlocalRveLoading::substep(PeriodicBed           &bed,
+                              const Eigen::Matrix3d &F,
+                              RveStepResult         &total)
+  {
+    const bool jammed = -stress(bed).trace() / 3.0 >= opts.jamming_pressure;
+    total.jammed      = jammed;
+    const PeriodicBed saved = bed;
+    map_affinely(bed, F);
+    NonlocalBedSystem system(bed.particles,
+                             opts.materials,
+                             bed.cell,
+                             bed_options(jammed && opts.nonlocal));
+    Eigen::VectorXd   residual;
+    bool              ok = false;
+    if (!jammed)
+      {
+        const double R = bed.particles.mean_radius();
+        const double floor
+          = opts.force_floor_fraction * opts.jamming_pressure * pi * R * R;
+        const FireResult f = fire.relax(system,
+                                        opts.fire_tolerance,
+                                        opts.fire_iterations,
+                                        floor);
+        total.relaxation_iterations += f.iterations;
+        total.relative_residual = f.relative_residual;
+        ok                      = f.converged;
+      }
+    else
+      {
+        const ContactSums s = system.residual(residual);
+        if (residual.allFinite() && s.n_loaded == 0)
+          ok = true;
+        else if (residual.allFinite())
+          {
+            const NonlocalTrustRegionResult r = solver.solve(system);
+            total.iterations += r.iterations + r.krylov_iterations;
+            total.cg_iterations += r.cg_iterations;
+            total.relaxation_iterations += r.fire_iterations;
+            total.relative_residual = r.relative_residual;
+            ok                      = r.converged;
+          }
+      }
+    if (!ok)
+      bed = saved;
+    return ok;
+  }
+
+  RveStepResult
+  NonlocalRveLoading::deform_to(PeriodicBed           &bed,
+                                const Eigen::Matrix3d &F_target)
+  {
+    RveStepResult         total;
+    const Eigen::Matrix3d F_start = bed.deformation;
+    double                done    = 0.0;
+    fraction = std::clamp(fraction, opts.min_fraction, 1.0);
+    while (done < 1.0)
+      {
+        const double          t = std::min(1.0, done + fraction);
+        const Eigen::Matrix3d F
+          = t >= 1.0 ? F_target : F_start + t * (F_target - F_start);
+        if (substep(bed, F, total))
+          {
+            ++total.substeps;
+            done     = t;
+            fraction = std::min(1.0, fraction * opts.growth);
+          }
+        else
+          {
+            ++total.cutbacks;
+            if (fraction <= opts.min_fraction * (1.0 + 1e-12))
+              {
+                total.converged = false;
+                return total;
+              }
+            fraction = std::max(0.5 * fraction, opts.min_fraction);
+          }
+      }
+    total.converged = true;
+    return total;
+  }
+
+  RveStepResult
+  NonlocalRveLoading::apply_strain(PeriodicBed           &bed,
+                                   const Eigen::Matrix3d &strain_increment)
+  {
+    return deform_to(bed,
+                     (Eigen::Matrix3d::Identity() + strain_increment)
+                       * bed.deformation);
+  }
+
+  RveStepResult
+  NonlocalRveLoading::equilibrate(PeriodicBed &bed)
+  {
+    RveStepResult total;
+    total.converged = substep(bed, bed.deformation, total);
+    total.substeps  = total.converged ? 1 : 0;
+    return total;
+  }
+} // namespace compax::dem

@@ -1,0 +1,102 @@
+// `compax rve` with elastic frictionless spheres and the nonlocal contact
+// formulation (Gonzalez & Cuitino 2012) through the real executable on a
+// small cell: it runs, the cell follows the uniaxial path exactly (mass
+// conservation rho exp(eps_zz) = rho_0), jammed states are in equilibrium,
+// it unloads to zero axial stress, the nonlocal terms change the stress of
+// the Hertz run on the same packing, and the nonlocal formulation with the
+// bonded elasto-plastic law is refused.
+
+#include "app_test_support.h"
+
+#include <cmath>
+
+using compax::testing::AppTest;
+using compax::testing::Csv;
+
+namespace
+{
+  std::string
+  small_cell(const std::string &law, const std::string &formulation)
+  {
+    return "subsection Packing\n"
+           " set Number of particles = 40\n"
+           " set Seed = 4\n"
+           "end\n"
+           "subsection Strain path\n"
+           " set Target relative density = 0.72\n"
+           " set Loading steps = 8\n"
+           " set Unloading strain step = 3e-3\n"
+           "end\n"
+           "subsection Output\n"
+           " set Snapshot interval = 0\n"
+           "end\n"
+           "subsection Contact\n"
+           " set Contact law = "
+           + law + "\n set Formulation = " + formulation + "\nend\n";
+  }
+
+  /// Mean pressure at the end of loading.
+  double
+  loaded_pressure(const Csv &rve)
+  {
+    double p = 0.0;
+    for (std::size_t i = 0; i < rve.rows(); ++i)
+      if (rve.text.at("stage")[i] == "loading")
+        p = rve.column.at("mean_pressure")[i];
+    return p;
+  }
+} // namespace
+
+class RveNonlocal : public AppTest
+{
+};
+
+TEST_F(RveNonlocal, SmallCellLoadsAndUnloads)
+{
+  write("nonlocal.prm", small_cell("elastic", "nonlocal"));
+  const auto r = compax("rve nonlocal.prm -o nl");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("nonlocal contact formulation"), std::string::npos);
+  const Csv rve(folder / "nl" / "rve.csv");
+  ASSERT_GT(rve.rows(), 10u);
+  const double rho0   = rve.column.at("relative_density")[0];
+  bool         jammed = false, unloading = false;
+  for (std::size_t i = 0; i < rve.rows(); ++i)
+    {
+      EXPECT_NEAR(rve.column.at("relative_density")[i]
+                    * std::exp(rve.column.at("eps_zz")[i]),
+                  rho0,
+                  1e-9 * rho0)
+        << "row " << i;
+      if (rve.column.at("jammed")[i] == 1.0)
+        {
+          jammed = true;
+          EXPECT_LE(rve.column.at("residual")[i], 1e-6) << "row " << i;
+          EXPECT_LT(rve.column.at("sigma_zz")[i], 0.0) << "row " << i;
+        }
+      unloading |= rve.text.at("stage")[i] == "unloading";
+    }
+  EXPECT_TRUE(jammed);
+  EXPECT_TRUE(unloading);
+  // Unloaded: the axial stress is gone (to the relaxation's resolution,
+  // 1 % of the 0.5 MPa jamming pressure), far below its peak.
+  EXPECT_GE(rve.column.at("sigma_zz").back(), -0.01 * 0.5e6);
+  EXPECT_GT(loaded_pressure(rve), 1e6);
+
+  write("hertz.prm", small_cell("elastic", "hertz"));
+  const auto h = compax("rve hertz.prm -o hz");
+  ASSERT_EQ(h.exit_code, 0) << h.err << h.out;
+  const Csv    hz(folder / "hz" / "rve.csv");
+  const double p_nl = loaded_pressure(rve), p_hz = loaded_pressure(hz);
+  ASSERT_GT(p_hz, 0.0);
+  EXPECT_GT(std::abs(p_nl - p_hz), 1e-3 * p_hz);
+}
+
+TEST_F(RveNonlocal, NonlocalWithBondedLawIsRefused)
+{
+  write("bad.prm", small_cell("bonded-elastoplastic", "nonlocal"));
+  const auto r = compax("rve bad.prm -o bad");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("Contact/Formulation"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("Contact law = elastic"), std::string::npos) << r.err;
+}

@@ -1,0 +1,98 @@
+// The FE2 tablet distributed over MPI ranks gives the forces of the
+// one-rank run: every rank initializes its points in the same order, so a
+// point draws the same pool member whichever rank owns it, and each RVE
+// is evaluated by its owner only. The RVEs are lattices (cheap and
+// deterministic), two of them, so that a wrong draw would show. Run as `mpirun
+// -np 2 compax_coupling_tests
+// --gtest_filter='RveMaterialMpi.*'` (ctest label mpi); on one rank it
+// compares a run with itself.
+#include "coupling/rve_material.h"
+#include "fem/tablet_process.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+using namespace compax;
+
+namespace
+{
+  constexpr double R = 100e-6;
+
+  /// 2 x 2 x 2 simple cubic cell of spacing a, virgin histories.
+  dem::PeriodicBed
+  simple_cubic(const double a, const dem::ContactModel &model)
+  {
+    dem::PeriodicBed bed;
+    bed.cell = dem::PeriodicCell::box(Eigen::Vector3d::Constant(2 * a),
+                                      {true, true, true});
+    bed.reference_lattice = bed.cell.lattice();
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        for (int k = 0; k < 2; ++k)
+          bed.particles.add(a * Eigen::Vector3d(i, j, k), R);
+    bed.contacts.set_skin(0.3 * R);
+    bed.contacts.rebuild(bed.particles, bed.cell, model);
+    return bed;
+  }
+
+  /// A frictional die whose points alternate between two lattices (two
+  /// pool members of different preload), so that the solution is not
+  /// uniform and a point must draw the same member on any rank.
+  std::vector<fem::TabletStep>
+  fe2_cycle(MPI_Comm comm)
+  {
+    const dem::ContactModel model(
+      dem::ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0}, 1.26e6);
+    coupling::RveMaterialSpec spec;
+    spec.pool            = {simple_cubic(2 * R - 0.010 * R, model),
+                            simple_cubic(2 * R - 0.015 * R, model)};
+    spec.compaction_axis = 1;
+
+    fem::TabletSolverSettings s;
+    s.geometry.die_diameter    = 10e-3;
+    s.geometry.fill_height     = 5e-3;
+    s.geometry.n_radial_cells  = 2;
+    s.wall_friction            = 0.2;
+    s.initial_relative_density = spec.pool[1].relative_density();
+    fem::TabletSolver<2> solver(
+      s, std::make_shared<coupling::RveMaterial>(spec, model), comm);
+    fem::TabletProcess p;
+    p.compaction_displacement = 0.02e-3;
+    p.compaction_steps        = 4;
+    p.unloading_displacement  = 0.005e-3;
+    p.unloading_steps         = 2;
+    p.ejection_steps          = 0;
+    p.ejection_displacement   = 0.0;
+    std::vector<fem::TabletStep> steps;
+    EXPECT_TRUE(fem::run_tablet_process<2>(
+      solver, p, [&](const fem::TabletStep &st) { steps.push_back(st); }));
+    return steps;
+  }
+} // namespace
+
+TEST(RveMaterialMpi, DistributedFe2RunGivesSerialForces)
+{
+  const auto distributed = fe2_cycle(MPI_COMM_WORLD);
+  const auto serial      = fe2_cycle(MPI_COMM_SELF);
+  ASSERT_EQ(distributed.size(), serial.size());
+  double scale = 0.0;
+  for (const auto &st : serial)
+    scale = std::max(scale, st.forces.upper_punch_force);
+  ASSERT_GT(scale, 0.0);
+  for (std::size_t k = 0; k < serial.size(); ++k)
+    {
+      const auto &a = distributed[k].forces, &b = serial[k].forces;
+      // Both converge to the Newton tolerance 1e-8 from different
+      // round-off.
+      EXPECT_NEAR(a.upper_punch_force, b.upper_punch_force, 1e-6 * scale)
+        << "step " << k;
+      EXPECT_NEAR(a.lower_punch_force, b.lower_punch_force, 1e-6 * scale);
+      EXPECT_NEAR(a.die_wall_normal_force,
+                  b.die_wall_normal_force,
+                  1e-6 * scale);
+    }
+}
