@@ -8,6 +8,7 @@
 #include "dem/contact/bonded_elastoplastic.h"
 #include "fem/isotropic_elasticity.h"
 #include "fem/tablet_solver.h"
+#include "simple_cubic_cell.h"
 
 #include <gtest/gtest.h>
 
@@ -37,22 +38,6 @@ namespace
     return sum / points.size();
   }
 
-  /// 2 x 2 x 2 simple cubic cell of spacing a, virgin histories.
-  dem::PeriodicBed
-  simple_cubic(const double a, const dem::ContactModel &model)
-  {
-    dem::PeriodicBed bed;
-    bed.cell = dem::PeriodicCell::box(Eigen::Vector3d::Constant(2 * a),
-                                      {true, true, true});
-    bed.reference_lattice = bed.cell.lattice();
-    for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 2; ++j)
-        for (int k = 0; k < 2; ++k)
-          bed.particles.add(a * Eigen::Vector3d(i, j, k), R);
-    bed.contacts.set_skin(0.3 * R);
-    bed.contacts.rebuild(bed.particles, bed.cell, model);
-    return bed;
-  }
 } // namespace
 
 TEST(RveMaterialLattice, Fe2TabletOfSimpleCubicLatticeFollowsThePairLaw)
@@ -60,9 +45,9 @@ TEST(RveMaterialLattice, Fe2TabletOfSimpleCubicLatticeFollowsThePairLaw)
   const dem::ContactModel   model  = material1();
   const double              gamma0 = 0.01 * R, a = 2 * R - gamma0;
   coupling::RveMaterialSpec spec;
-  spec.pool                  = {simple_cubic(a, model)};
-  spec.compaction_axis       = 1; // the axial row of the r-z model
-  spec.tangent_floor_modulus = 1e3;
+  spec.pool            = {compax::testing::simple_cubic_cell(a, R, model)};
+  spec.compaction_axis = 1; // the axial row of the r-z model
+  spec.tangent_floor_modulus               = 1e3;
   spec.loading.equilibrium.force_tolerance = 1e-10;
   const double rho_lattice = 4.0 / 3.0 * M_PI * R * R * R / (a * a * a);
   ASSERT_NEAR(spec.pool[0].relative_density(), rho_lattice, 1e-14);

@@ -8,6 +8,7 @@
 // compares a run with itself.
 #include "coupling/rve_material.h"
 #include "fem/tablet_process.h"
+#include "simple_cubic_cell.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -22,22 +23,6 @@ namespace
 {
   constexpr double R = 100e-6;
 
-  /// 2 x 2 x 2 simple cubic cell of spacing a, virgin histories.
-  dem::PeriodicBed
-  simple_cubic(const double a, const dem::ContactModel &model)
-  {
-    dem::PeriodicBed bed;
-    bed.cell = dem::PeriodicCell::box(Eigen::Vector3d::Constant(2 * a),
-                                      {true, true, true});
-    bed.reference_lattice = bed.cell.lattice();
-    for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 2; ++j)
-        for (int k = 0; k < 2; ++k)
-          bed.particles.add(a * Eigen::Vector3d(i, j, k), R);
-    bed.contacts.set_skin(0.3 * R);
-    bed.contacts.rebuild(bed.particles, bed.cell, model);
-    return bed;
-  }
 
   /// A frictional die whose points alternate between two lattices (two
   /// pool members of different preload), so that the solution is not
@@ -48,8 +33,9 @@ namespace
     const dem::ContactModel model(
       dem::ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0}, 1.26e6);
     coupling::RveMaterialSpec spec;
-    spec.pool            = {simple_cubic(2 * R - 0.010 * R, model),
-                            simple_cubic(2 * R - 0.015 * R, model)};
+    spec.pool
+      = {compax::testing::simple_cubic_cell(2 * R - 0.010 * R, R, model),
+         compax::testing::simple_cubic_cell(2 * R - 0.015 * R, R, model)};
     spec.compaction_axis = 1;
 
     fem::TabletSolverSettings s;
