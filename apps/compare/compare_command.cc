@@ -6,6 +6,7 @@
 #include "apps/common/material_parameters.h"
 #include "apps/compare/compare_table.h"
 #include "apps/die/die_command.h"
+#include "apps/rve/rve_parameters.h"
 #include "apps/tablet/tablet_command.h"
 
 #include <deal.II/base/exceptions.h>
@@ -143,18 +144,32 @@ namespace compax::cli
         }
     }
 
-    /// Runs @p command in-process in @p folder (created here, with the
-    /// parameters it ran with in parameters.prm). Returns its exit code;
-    /// an exception of the study is reported in @p message and gives
-    /// not_converged (bad input stays bad input).
-    int
+    /// The state of one sub-study for compare.md.
+    struct StudyStatus
+    {
+      std::string name, folder;
+      bool        ran  = false;
+      int         code = success;
+      std::string message;
+      double      seconds = 0.0;
+    };
+
+    /// Runs @p command in-process in the folder @p status.folder of
+    /// @p parent (created here, with the parameters it ran with in
+    /// parameters.prm) and records in @p status that it ran, its exit code,
+    /// time and message: an exception of the study is reported in the
+    /// message and gives not_converged (bad input stays bad input).
+    void
     run_study(const Command     &command,
               const Settings    &settings,
-              const fs::path    &folder,
+              const fs::path    &parent,
               const std::string &study,
-              std::string       &message,
-              double            &seconds)
+              StudyStatus       &status)
     {
+      status.ran                       = true;
+      const fs::path           folder  = parent / status.folder;
+      std::string             &message = status.message;
+      double                  &seconds = status.seconds;
       dealii::ParameterHandler prm;
       prepare(command, prm, settings, study);
       fs::create_directories(folder);
@@ -193,7 +208,7 @@ namespace compax::cli
       if (!message.empty())
         std::cout << "compax compare: the " << study
                   << " study failed: " << message << std::endl;
-      return code;
+      status.code = code;
     }
 
     /// What compare reads from its parameters.
@@ -269,35 +284,7 @@ namespace compax::cli
       declare_particle_material(prm, material_1);
       prm.leave_subsection();
 
-      prm.enter_subsection("Bonding");
-      prm.declare_entry("Fracture toughness from energies",
-                        "false",
-                        Bool(),
-                        "true: K_Ic = sqrt(2 (2 omega + G_p) E) from the "
-                        "Material's surface energy omega (Gonzalez 2018 after "
-                        "Eq. 5); false: the Fracture toughness entry.");
-      declare_quantity(prm,
-                       "Fracture toughness",
-                       "1.26e6",
-                       non_negative(),
-                       "Pa m^1/2",
-                       "Fracture toughness K_Ic of the solid bridges between "
-                       "particles (Material 1 of Gonzalez 2018, Table 1); 0 "
-                       "for no bonding.");
-      declare_quantity(prm,
-                       "Plastic dissipation",
-                       "0",
-                       non_negative(),
-                       "J/m^2",
-                       "G_p added to the surface energies when K_Ic is "
-                       "computed from energies.");
-      declare_quantity(prm,
-                       "Regularization parameter",
-                       "0.01",
-                       positive(),
-                       "-",
-                       "xi_B of the regularized law, Eq. (4).");
-      prm.leave_subsection();
+      declare_rve_bonding_parameters(prm);
 
       prm.enter_subsection("Die");
       declare_quantity(prm,
@@ -567,16 +554,6 @@ namespace compax::cli
       return s;
     }
 
-    /// The state of one sub-study for compare.md.
-    struct StudyStatus
-    {
-      std::string name, folder;
-      bool        ran  = false;
-      int         code = success;
-      std::string message;
-      double      seconds = 0.0;
-    };
-
     /// Summary statistics of the rows of one comparison.
     void
     summarize(std::ostream                     &out,
@@ -755,13 +732,7 @@ namespace compax::cli
 
         // (1) The particle die.
         const auto die_command = make_die_command();
-        die.ran                = true;
-        die.code               = run_study(*die_command,
-                             c.die,
-                             folder / die.folder,
-                             "particle die",
-                             die.message,
-                             die.seconds);
+        run_study(*die_command, c.die, folder, "particle die", die);
         if (!fs::is_regular_file(folder / "die" / "die.csv"))
           return not_converged;
         const CsvTable die_csv(folder / "die" / "die.csv");
@@ -813,24 +784,20 @@ namespace compax::cli
 
         // (2) The tablet on the RVE database.
         const auto tablet_command = make_tablet_command();
-        database.ran              = true;
-        database.code             = run_study(*tablet_command,
-                                  tablet_settings(c, fill, branches, false),
-                                  folder / database.folder,
-                                  "database-mode tablet",
-                                  database.message,
-                                  database.seconds);
+        run_study(*tablet_command,
+                  tablet_settings(c, fill, branches, false),
+                  folder,
+                  "database-mode tablet",
+                  database);
 
         // (3) The FE2 tablet.
         if (c.fe2)
           {
-            fe2.ran  = true;
-            fe2.code = run_study(*tablet_command,
-                                 tablet_settings(c, fill, branches, true),
-                                 folder / fe2.folder,
-                                 "FE2 tablet",
-                                 fe2.message,
-                                 fe2.seconds);
+            run_study(*tablet_command,
+                      tablet_settings(c, fill, branches, true),
+                      folder,
+                      "FE2 tablet",
+                      fe2);
           }
         else
           fe2.message = "not run (Compare/FE2 = false)";

@@ -1,6 +1,7 @@
 #include "apps/die/die_parameters.h"
 
 #include "apps/cli/parameters.h"
+#include "apps/common/contact_parameters.h"
 #include "apps/common/equilibrium_parameters.h"
 #include "apps/common/material_parameters.h"
 
@@ -248,20 +249,13 @@ namespace compax::cli
     declare_equilibrium_tolerances(prm);
     prm.leave_subsection();
 
-    prm.enter_subsection("Contact");
-    prm.declare_entry(
-      "Contact law",
-      "bonded-elastoplastic",
-      dealii::Patterns::Selection("bonded-elastoplastic|elastic"),
+    declare_contact_choice(
+      prm,
       "bonded-elastoplastic: the bonded elasto-plastic law of Gonzalez 2018 "
       "(Eq. 4) with the Material and Bonding entries; elastic: elastic "
       "frictionless spheres without bonding, with the Young's modulus and "
       "Poisson's ratio of Material (and Material 2) only (the plastic and "
-      "Bonding entries are not used; bonding surface and bonds are 0).");
-    prm.declare_entry(
-      "Formulation",
-      "hertz",
-      dealii::Patterns::Selection("hertz|nonlocal"),
+      "Bonding entries are not used; bonding surface and bonds are 0).",
       "hertz: independent contacts (local laws); nonlocal: the nonlocal "
       "contact formulation of Gonzalez & Cuitino 2012 (Eqs. 9, 10, "
       "Algorithm 1: the deformation of a particle by all its contact forces "
@@ -269,7 +263,6 @@ namespace compax::cli
       "= elastic the equilibria are solved by a trust region on the "
       "frozen-angle Hessian with an exact-Jacobian Newton-Krylov finish "
       "(consolidation with Hertz contacts), for both formulations.");
-    prm.leave_subsection();
   }
 
   DieStudy
@@ -404,29 +397,14 @@ namespace compax::cli
     get_equilibrium_tolerances(prm, equilibrium);
     prm.leave_subsection();
 
-    prm.enter_subsection("Contact");
-    const std::string law         = prm.get("Contact law");
-    const std::string formulation = prm.get("Formulation");
-    prm.leave_subsection();
-    if (formulation == "nonlocal" && law != "elastic")
-      reject_entry("Contact/Formulation",
-                   formulation,
-                   "the nonlocal formulation (Gonzalez & Cuitino 2012) is "
-                   "for elastic frictionless spheres; it needs Contact/"
-                   "Contact law = elastic (here: "
-                     + law
-                     + "; the bonded elasto-plastic law's plasticity and "
-                       "solid bridges are outside it)");
-    if (law == "elastic")
+    const ContactChoice contact = get_contact_choice(prm);
+    if (contact.law == "elastic")
       {
         dem::ElasticDieOptions elastic;
         for (const auto &m : materials)
           elastic.materials.push_back({m.youngs_modulus, m.poisson_ratio});
-        elastic.nonlocal               = formulation == "nonlocal";
-        elastic.solver.force_tolerance = equilibrium.force_tolerance;
-        elastic.solver.step_tolerance  = equilibrium.step_tolerance;
-        elastic.solver.max_iterations
-          = std::max(elastic.solver.max_iterations, equilibrium.max_iterations);
+        elastic.nonlocal = contact.formulation == "nonlocal";
+        set_elastic_solver_tolerances(elastic, equilibrium);
         protocol.elastic = elastic;
       }
 

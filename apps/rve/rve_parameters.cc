@@ -2,6 +2,7 @@
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
+#include "apps/common/contact_parameters.h"
 #include "apps/common/equilibrium_parameters.h"
 #include "apps/common/material_parameters.h"
 #include "dem/periodic/size_distribution_fit.h"
@@ -162,12 +163,8 @@ namespace compax::cli
   }
 
   void
-  declare_rve_cell_parameters(dealii::ParameterHandler &prm)
+  declare_rve_bonding_parameters(dealii::ParameterHandler &prm)
   {
-    prm.enter_subsection("Material");
-    declare_particle_material(prm, material_1);
-    prm.leave_subsection();
-
     prm.enter_subsection("Bonding");
     prm.declare_entry("Fracture toughness from energies",
                       "false",
@@ -197,6 +194,16 @@ namespace compax::cli
                      "-",
                      "xi_B of the regularized law, Eq. (4).");
     prm.leave_subsection();
+  }
+
+  void
+  declare_rve_cell_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    declare_particle_material(prm, material_1);
+    prm.leave_subsection();
+
+    declare_rve_bonding_parameters(prm);
 
     prm.enter_subsection("Packing");
     prm.declare_entry("Number of particles",
@@ -440,28 +447,20 @@ namespace compax::cli
 
     declare_rve_solver_parameters(prm);
 
-    prm.enter_subsection("Contact");
-    prm.declare_entry(
-      "Contact law",
-      "bonded-elastoplastic",
-      dealii::Patterns::Selection("bonded-elastoplastic|elastic"),
+    declare_contact_choice(
+      prm,
       "bonded-elastoplastic: the bonded elasto-plastic law of Gonzalez 2018 "
       "(Eq. 4) with the Material and Bonding entries; elastic: elastic "
       "frictionless spheres without bonding, with Material's Young's "
       "modulus and Poisson's ratio only (moduli.csv then stays empty: the "
       "condensed tangent is that of the bonded law; the packing is made "
-      "with the bonded law's elastic branch, virgin).");
-    prm.declare_entry(
-      "Formulation",
-      "hertz",
-      dealii::Patterns::Selection("hertz|nonlocal"),
+      "with the bonded law's elastic branch, virgin).",
       "hertz: independent contacts; nonlocal: the nonlocal contact "
       "formulation of Gonzalez & Cuitino 2012 (Algorithm 1 at every "
       "residual, contacts through lattice images included), needs Contact "
       "law = elastic. Elastic cells are solved by a trust region on the "
       "frozen-angle Hessian with an exact-Jacobian Newton-Krylov finish, "
       "below Solver/Jamming pressure by FIRE with Hertz contacts.");
-    prm.leave_subsection();
   }
 
   RveCell
@@ -644,30 +643,14 @@ namespace compax::cli
 
     s.loading = get_rve_loading_options(prm);
 
-    prm.enter_subsection("Contact");
-    const std::string law         = prm.get("Contact law");
-    const std::string formulation = prm.get("Formulation");
-    prm.leave_subsection();
-    if (formulation == "nonlocal" && law != "elastic")
-      reject_entry("Contact/Formulation",
-                   formulation,
-                   "the nonlocal formulation (Gonzalez & Cuitino 2012) is "
-                   "for elastic frictionless spheres; it needs Contact/"
-                   "Contact law = elastic (here: "
-                     + law
-                     + "; the bonded elasto-plastic law's plasticity and "
-                       "solid bridges are outside it)");
-    if (law == "elastic")
+    const ContactChoice contact = get_contact_choice(prm);
+    if (contact.law == "elastic")
       {
         dem::NonlocalRveOptions e;
         const auto             &m = s.model.material(0);
         e.materials               = {{m.youngs_modulus, m.poisson_ratio}};
-        e.nonlocal                = formulation == "nonlocal";
-        e.solver.force_tolerance  = s.loading.equilibrium.force_tolerance;
-        e.solver.step_tolerance   = s.loading.equilibrium.step_tolerance;
-        e.solver.max_iterations
-          = std::max(e.solver.max_iterations,
-                     s.loading.equilibrium.max_iterations);
+        e.nonlocal                = contact.formulation == "nonlocal";
+        set_elastic_solver_tolerances(e, s.loading.equilibrium);
         e.jamming_pressure     = s.loading.jamming_pressure;
         e.fire_iterations      = s.loading.fire_iterations;
         e.fire_tolerance       = s.loading.fire_tolerance;

@@ -548,6 +548,14 @@ namespace compax::cli
       s.write_hdf5          = prm.get_bool("Write HDF5");
       s.checkpoint_interval = prm.get_integer("Checkpoint interval");
       s.resume_from         = prm.get("Resume from");
+      if (!s.resume_from.empty() && s.multiscale_model == "multiscale-fe2")
+        {
+          prm.leave_subsection();
+          reject_entry("Resume from",
+                       s.resume_from,
+                       "cannot resume a multiscale-fe2 run: tablet "
+                       "checkpoints do not hold the RVE states yet");
+        }
       if (!s.resume_from.empty()
           && !std::filesystem::is_directory(std::filesystem::path(s.resume_from)
                                             / "checkpoint"))

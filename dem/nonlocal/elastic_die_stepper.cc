@@ -1,5 +1,6 @@
 #include "dem/nonlocal/elastic_die_stepper.h"
 
+#include "dem/nonlocal/nonlocal_coordination.h"
 #include "dem/solver/fire_relaxation.h"
 #include "dem/solver/trust_region_newton.h"
 
@@ -36,21 +37,18 @@ namespace compax::dem
   {
   }
 
-  NonlocalBedOptions
-  ElasticDieStepper::bed_options(const bool nonlocal) const
+  NonlocalBedSystem
+  ElasticDieStepper::make_system(Bed &bed, const bool nonlocal) const
   {
     NonlocalBedOptions o = opts.bed;
     o.nonlocal           = nonlocal;
-    return o;
+    return NonlocalBedSystem(bed.particles, opts.materials, bed.walls, o);
   }
 
   ContactSums
   ElasticDieStepper::sums(Bed &bed) const
   {
-    NonlocalBedSystem system(bed.particles,
-                             opts.materials,
-                             bed.walls,
-                             bed_options(opts.nonlocal));
+    NonlocalBedSystem system = make_system(bed, opts.nonlocal);
     Eigen::VectorXd   F;
     return system.residual(F);
   }
@@ -58,25 +56,14 @@ namespace compax::dem
   double
   ElasticDieStepper::coordination(Bed &bed) const
   {
-    NonlocalBedSystem system(bed.particles,
-                             opts.materials,
-                             bed.walls,
-                             bed_options(opts.nonlocal));
-    Eigen::VectorXd   F;
-    system.residual(F);
-    return bed.particles.size() > 0
-             ? 2.0 * static_cast<double>(system.n_loaded_pairs())
-                 / static_cast<double>(bed.particles.size())
-             : 0.0;
+    NonlocalBedSystem system = make_system(bed, opts.nonlocal);
+    return coordination_number(system);
   }
 
   bool
   ElasticDieStepper::solve(Bed &bed, LoadStepResult &total)
   {
-    NonlocalBedSystem system(bed.particles,
-                             opts.materials,
-                             bed.walls,
-                             bed_options(opts.nonlocal));
+    NonlocalBedSystem system = make_system(bed, opts.nonlocal);
     Eigen::VectorXd   F;
     ContactSums       s = system.residual(F);
     if (!F.allFinite())
@@ -113,11 +100,8 @@ namespace compax::dem
   {
     LoadStepResult total;
     const DieWalls start = bed.walls;
-    double         done  = 0.0;
-    fraction             = std::clamp(fraction, opts.min_fraction, 1.0);
-    while (done < 1.0)
-      {
-        const double   t    = std::min(1.0, done + fraction);
+    total.converged      = advance_in_substeps(
+      fraction, opts.stepping, total.cutbacks, [&](double t) {
         const DieWalls next = t >= 1.0 ? target : interpolate(start, target, t);
         const ParticleSystem saved_particles = bed.particles;
         const DieWalls       saved_walls     = bed.walls;
@@ -125,22 +109,11 @@ namespace compax::dem
         bed.walls = next;
         ++total.substeps;
         if (solve(bed, total))
-          {
-            done     = t;
-            fraction = std::min(1.0, fraction * opts.growth);
-            continue;
-          }
+          return true;
         bed.particles = saved_particles;
         bed.walls     = saved_walls;
-        ++total.cutbacks;
-        if (fraction <= opts.min_fraction * (1.0 + 1e-12))
-          {
-            total.converged = false;
-            return total;
-          }
-        fraction = std::max(0.5 * fraction, opts.min_fraction);
-      }
-    total.converged = true;
+        return false;
+      });
     return total;
   }
 
@@ -151,10 +124,7 @@ namespace compax::dem
   {
     const auto          t0 = std::chrono::steady_clock::now();
     ConsolidationResult result;
-    NonlocalBedSystem   system(bed.particles,
-                             opts.materials,
-                             bed.walls,
-                             bed_options(false));
+    NonlocalBedSystem   system = make_system(bed, false);
     FireRelaxation      fire;
     Eigen::VectorXd     F;
     const double        R = bed.particles.mean_radius();

@@ -4,6 +4,7 @@
 #include "dem/nonlocal/nonlocal_trust_region.h"
 #include "dem/solver/consolidation.h"
 #include "dem/solver/load_stepper.h"
+#include "dem/solver/substepping.h"
 
 #include <vector>
 
@@ -20,10 +21,8 @@ namespace compax::dem
     NonlocalBedOptions         bed;
     NonlocalTrustRegionOptions solver;
     NewtonKrylovOptions        krylov;
-    /// Smallest sub-step of a load step as a fraction of it, and the
-    /// growth of the sub-step after a success [-].
-    double min_fraction = 1.0 / 1024.0;
-    double growth       = 1.5;
+    /// Sub-stepping of a step.
+    SubstepLimits stepping;
   };
 
   /**
@@ -85,8 +84,10 @@ namespace compax::dem
     bool
     solve(Bed &bed, LoadStepResult &total);
 
-    NonlocalBedOptions
-    bed_options(bool nonlocal) const;
+    /// The system of the bed's particles and walls with the options'
+    /// candidate skin and tolerances and the given formulation.
+    NonlocalBedSystem
+    make_system(Bed &bed, bool nonlocal) const;
 
     ElasticDieOptions   opts;
     NonlocalTrustRegion solver;

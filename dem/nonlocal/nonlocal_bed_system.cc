@@ -26,7 +26,7 @@ namespace compax::dem
     }
 
     /// No walls (a periodic cell).
-    class NoWalls final : public NonlocalWalls
+    class NoWalls final : public FlatWalls
     {
     public:
       int
@@ -43,14 +43,6 @@ namespace compax::dem
 
       Eigen::Vector3d
       outward_normal(int, const Eigen::Vector3d &) const override
-      {
-        return Eigen::Vector3d::Zero();
-      }
-
-      Eigen::Vector3d
-      normal_derivative(int,
-                        const Eigen::Vector3d &,
-                        const Eigen::Vector3d &) const override
       {
         return Eigen::Vector3d::Zero();
       }

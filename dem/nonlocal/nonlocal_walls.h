@@ -54,8 +54,21 @@ namespace compax::dem
     sums_slot(int wall) const = 0;
   };
 
+  /// Flat walls: constant normals, which add no geometric stiffness.
+  class FlatWalls : public NonlocalWalls
+  {
+  public:
+    Eigen::Vector3d
+    normal_derivative(int,
+                      const Eigen::Vector3d &,
+                      const Eigen::Vector3d &) const final
+    {
+      return Eigen::Vector3d::Zero();
+    }
+  };
+
   /// The six flat walls of a SquareDie (numbered by SquareDie::Face).
-  class SquareDieWalls final : public NonlocalWalls
+  class SquareDieWalls final : public FlatWalls
   {
   public:
     explicit SquareDieWalls(const SquareDie &die)
@@ -79,14 +92,6 @@ namespace compax::dem
     outward_normal(const int wall, const Eigen::Vector3d &) const override
     {
       return SquareDie::outward_normal(wall);
-    }
-
-    Eigen::Vector3d
-    normal_derivative(int,
-                      const Eigen::Vector3d &,
-                      const Eigen::Vector3d &) const override
-    {
-      return Eigen::Vector3d::Zero();
     }
 
     double

@@ -1,5 +1,6 @@
 #include "dem/rve/nonlocal_rve_loading.h"
 
+#include "dem/nonlocal/nonlocal_coordination.h"
 #include "dem/solver/trust_region_newton.h"
 
 #include <algorithm>
@@ -18,21 +19,18 @@ namespace compax::dem
   {
   }
 
-  NonlocalBedOptions
-  NonlocalRveLoading::bed_options(const bool nonlocal) const
+  NonlocalBedSystem
+  NonlocalRveLoading::make_system(PeriodicBed &bed, const bool nonlocal) const
   {
     NonlocalBedOptions o = opts.bed;
     o.nonlocal           = nonlocal;
-    return o;
+    return NonlocalBedSystem(bed.particles, opts.materials, bed.cell, o);
   }
 
   Eigen::Matrix3d
   NonlocalRveLoading::stress(PeriodicBed &bed) const
   {
-    NonlocalBedSystem system(bed.particles,
-                             opts.materials,
-                             bed.cell,
-                             bed_options(opts.nonlocal));
+    NonlocalBedSystem system = make_system(bed, opts.nonlocal);
     Eigen::VectorXd   F;
     system.residual(F);
     return system.stress();
@@ -41,16 +39,8 @@ namespace compax::dem
   double
   NonlocalRveLoading::coordination(PeriodicBed &bed) const
   {
-    NonlocalBedSystem system(bed.particles,
-                             opts.materials,
-                             bed.cell,
-                             bed_options(opts.nonlocal));
-    Eigen::VectorXd   F;
-    system.residual(F);
-    return bed.particles.size() > 0
-             ? 2.0 * static_cast<double>(system.n_loaded_pairs())
-                 / static_cast<double>(bed.particles.size())
-             : 0.0;
+    NonlocalBedSystem system = make_system(bed, opts.nonlocal);
+    return coordination_number(system);
   }
 
   bool
@@ -62,10 +52,7 @@ namespace compax::dem
     total.jammed      = jammed;
     const PeriodicBed saved = bed;
     map_affinely(bed, F);
-    NonlocalBedSystem system(bed.particles,
-                             opts.materials,
-                             bed.cell,
-                             bed_options(jammed && opts.nonlocal));
+    NonlocalBedSystem system = make_system(bed, jammed && opts.nonlocal);
     Eigen::VectorXd   residual;
     bool              ok = false;
     if (!jammed)
@@ -107,31 +94,15 @@ namespace compax::dem
   {
     RveStepResult         total;
     const Eigen::Matrix3d F_start = bed.deformation;
-    double                done    = 0.0;
-    fraction = std::clamp(fraction, opts.min_fraction, 1.0);
-    while (done < 1.0)
-      {
-        const double          t = std::min(1.0, done + fraction);
+    total.converged               = advance_in_substeps(
+      fraction, opts.stepping, total.cutbacks, [&](double t) {
         const Eigen::Matrix3d F
           = t >= 1.0 ? F_target : F_start + t * (F_target - F_start);
-        if (substep(bed, F, total))
-          {
-            ++total.substeps;
-            done     = t;
-            fraction = std::min(1.0, fraction * opts.growth);
-          }
-        else
-          {
-            ++total.cutbacks;
-            if (fraction <= opts.min_fraction * (1.0 + 1e-12))
-              {
-                total.converged = false;
-                return total;
-              }
-            fraction = std::max(0.5 * fraction, opts.min_fraction);
-          }
-      }
-    total.converged = true;
+        if (!substep(bed, F, total))
+          return false;
+        ++total.substeps;
+        return true;
+      });
     return total;
   }
 

@@ -4,6 +4,7 @@
 #include "dem/nonlocal/nonlocal_trust_region.h"
 #include "dem/rve/periodic_bed.h"
 #include "dem/rve/rve_loading.h"
+#include "dem/solver/substepping.h"
 
 #include <Eigen/Core>
 
@@ -31,10 +32,8 @@ namespace compax::dem
     int    fire_iterations      = 20000;
     double fire_tolerance       = 1e-2;
     double force_floor_fraction = 1e-2;
-    /// Smallest sub-step as a fraction of the step, growth after a
-    /// success [-].
-    double min_fraction = 1.0 / 1024.0;
-    double growth       = 1.5;
+    /// Sub-stepping of a step.
+    SubstepLimits stepping;
   };
 
   /**
@@ -85,8 +84,10 @@ namespace compax::dem
     bool
     substep(PeriodicBed &bed, const Eigen::Matrix3d &F, RveStepResult &total);
 
-    NonlocalBedOptions
-    bed_options(bool nonlocal) const;
+    /// The system of the bed's particles and walls with the options'
+    /// candidate skin and tolerances and the given formulation.
+    NonlocalBedSystem
+    make_system(PeriodicBed &bed, bool nonlocal) const;
 
     NonlocalRveOptions  opts;
     NonlocalTrustRegion solver;

@@ -147,4 +147,27 @@ namespace compax::testing
       return column.empty() ? 0 : column.begin()->second.size();
     }
   };
+
+  /// Last value of `column` in the rows of the given `stage` (0 if the
+  /// stage has no row).
+  inline double
+  last_in_stage(const Csv         &csv,
+                const std::string &stage,
+                const std::string &column)
+  {
+    double value = 0.0;
+    for (std::size_t i = 0; i < csv.rows(); ++i)
+      if (csv.text.at("stage")[i] == stage)
+        value = csv.column.at(column)[i];
+    return value;
+  }
+
+  /// The subsection Contact of a parameter file with the given contact law
+  /// and formulation.
+  inline std::string
+  contact_subsection(const std::string &law, const std::string &formulation)
+  {
+    return "subsection Contact\n set Contact law = " + law
+           + "\n set Formulation = " + formulation + "\nend\n";
+  }
 } // namespace compax::testing

@@ -10,7 +10,9 @@
 #include <cmath>
 
 using compax::testing::AppTest;
+using compax::testing::contact_subsection;
 using compax::testing::Csv;
+using compax::testing::last_in_stage;
 
 namespace
 {
@@ -26,19 +28,13 @@ namespace
            " set Compaction steps = 5\n"
            " set Unloading points = 0.62\n"
            "end\n"
-           "subsection Contact\n"
-           " set Contact law = "
-           + law + "\n set Formulation = " + formulation + "\nend\n";
+           + contact_subsection(law, formulation);
   }
 
   double
   final_punch_force(const Csv &die)
   {
-    double f = 0.0;
-    for (std::size_t i = 0; i < die.rows(); ++i)
-      if (die.text.at("stage")[i] == "compaction")
-        f = die.column.at("upper_punch_force")[i];
-    return f;
+    return last_in_stage(die, "compaction", "upper_punch_force");
   }
 } // namespace
 

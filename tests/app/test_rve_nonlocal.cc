@@ -11,7 +11,9 @@
 #include <cmath>
 
 using compax::testing::AppTest;
+using compax::testing::contact_subsection;
 using compax::testing::Csv;
+using compax::testing::last_in_stage;
 
 namespace
 {
@@ -30,20 +32,14 @@ namespace
            "subsection Output\n"
            " set Snapshot interval = 0\n"
            "end\n"
-           "subsection Contact\n"
-           " set Contact law = "
-           + law + "\n set Formulation = " + formulation + "\nend\n";
+           + contact_subsection(law, formulation);
   }
 
   /// Mean pressure at the end of loading.
   double
   loaded_pressure(const Csv &rve)
   {
-    double p = 0.0;
-    for (std::size_t i = 0; i < rve.rows(); ++i)
-      if (rve.text.at("stage")[i] == "loading")
-        p = rve.column.at("mean_pressure")[i];
-    return p;
+    return last_in_stage(rve, "loading", "mean_pressure");
   }
 } // namespace
 

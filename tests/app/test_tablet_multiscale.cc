@@ -65,3 +65,11 @@ TEST_F(TabletMultiscale, BadDatabasePathsAreBadInput)
   expect_rejected(compax("tablet bad.prm -o out"),
                   "Multiscale/Paths/Branch densities");
 }
+
+TEST_F(TabletMultiscale, Fe2RunCannotResumeWithoutItsRveStates)
+{
+  write("bad.prm",
+        "subsection Material\n  set Model = multiscale-fe2\nend\n"
+        "subsection Output\n  set Resume from = earlier\nend\n");
+  expect_rejected(compax("tablet bad.prm -o out"), "Resume from");
+}

@@ -11,6 +11,8 @@
 #include "dem/nonlocal/square_die_deposition.h"
 #include "dem/solver/trust_region_newton.h"
 
+#include "nonlocal_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,40 +22,7 @@
 namespace
 {
   using namespace compax::dem;
-
-  constexpr double pi = 3.14159265358979323846;
-
-  const std::vector<ElasticMaterial> two_materials{{19e9, 0.30}, {7e9, 0.20}};
-
-  /// A 2x2x2 block of spheres on a perturbed cubic lattice, pressed
-  /// together by ~2 % of R and against the six walls of a square die.
-  struct Cluster
-  {
-    ParticleSystem particles;
-    SquareDie      die;
-  };
-
-  Cluster
-  make_cluster(const unsigned int seed)
-  {
-    std::mt19937                           gen(seed);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    Cluster                                c;
-    const double                           R = 100e-6, a = 1.96 * R;
-    for (int k = 0; k < 2; ++k)
-      for (int j = 0; j < 2; ++j)
-        for (int i = 0; i < 2; ++i)
-          {
-            const Eigen::Vector3d x((i - 0.5) * a + 3e-3 * R * u(gen),
-                                    (j - 0.5) * a + 3e-3 * R * u(gen),
-                                    (k + 0.5) * a + 3e-3 * R * u(gen));
-            c.particles.add(x, R * (1.0 + 0.01 * u(gen)), (i + j + k) % 2);
-          }
-    c.die.width              = 2.0 * a;
-    c.die.lower_punch_height = 0.0;
-    c.die.upper_punch_height = 2.0 * a;
-    return c;
-  }
+  using namespace compax::dem::nonlocal_test;
 
   /// F of Hertz contacts summed pair by pair, Eq. (9) written out here.
   Eigen::VectorXd
@@ -138,23 +107,6 @@ namespace
               1e-12 * ref.cwiseAbs().maxCoeff());
   }
 
-  /// Central difference of the residual along v.
-  Eigen::VectorXd
-  central_difference(NonlocalBedSystem     &system,
-                     const Eigen::VectorXd &v,
-                     const double           h)
-  {
-    auto                  x  = system.coordinates();
-    const Eigen::VectorXd x0 = x;
-    Eigen::VectorXd       Fp, Fm;
-    x = x0 + h * v;
-    system.residual(Fp);
-    x = x0 - h * v;
-    system.residual(Fm);
-    x = x0;
-    return (Fp - Fm) / (2 * h);
-  }
-
   TEST(NonlocalBedSystem, JacobianIsCentralDifferenceOfResidual)
   {
     for (const bool nonlocal : {false, true})
@@ -165,14 +117,11 @@ namespace
           o.nonlocal                   = nonlocal;
           o.fixed_point_tolerance      = 1e-15;
           o.max_fixed_point_iterations = 100000;
-          NonlocalBedSystem system(c.particles, two_materials, c.die, o);
-          Eigen::VectorXd   F, Jv, Kv;
-          BlockSparseMatrix K;
-          std::mt19937      gen(seed);
-          std::normal_distribution<double> normal;
-          Eigen::VectorXd                  v(3 * c.particles.size());
-          for (Eigen::Index k = 0; k < v.size(); ++k)
-            v[k] = normal(gen);
+          NonlocalBedSystem     system(c.particles, two_materials, c.die, o);
+          Eigen::VectorXd       F, Jv, Kv;
+          BlockSparseMatrix     K;
+          std::mt19937          gen(seed);
+          const Eigen::VectorXd v = random_vector(gen, 3 * c.particles.size());
           system.assemble(F, K);
           ASSERT_TRUE(F.allFinite());
           system.apply_jacobian(v, Jv);
@@ -216,47 +165,6 @@ namespace
     EXPECT_GT(std::abs(v.dot(Ju) - u.dot(Jv)), 1e-8 * scale);
   }
 
-  /// Chain of n spheres on the z axis between the punches of a wide die,
-  /// punch approach Delta, with the middle spheres displaced from their
-  /// equilibrium.
-  Cluster
-  make_chain(unsigned int n, double R, double Delta)
-  {
-    Cluster      c;
-    const double H           = 2.0 * n * R - Delta;
-    c.die.width              = 10.0 * R;
-    c.die.upper_punch_height = H;
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        double z = (k + 0.5) * H / n;
-        if (k > 0 && k + 1 < n)
-          z += 0.2 * Delta / n * (k % 2 ? 1.0 : -1.0);
-        c.particles.add(Eigen::Vector3d(0, 0, z), R, 0);
-      }
-    return c;
-  }
-
-  /// P = n_w (Delta / 2N + c P)^{3/2} (Eqs. 10, 11 for the chain), lower
-  /// root by bisection.
-  double
-  chain_force(unsigned int n, double R, double E, double nu, double Delta)
-  {
-    const double n_w = 4.0 / 3.0 * E / (1 - nu * nu) * std::sqrt(R);
-    const double c   = (1 + nu) * (3 - 2 * nu) / (4 * pi * R * E);
-    const double g   = Delta / (2.0 * n);
-    // f(P) = P - n_w (g + c P)^{3/2}: positive between the two roots.
-    double lo = 0.0, hi = n_w * std::pow(g, 1.5);
-    while (hi - n_w * std::pow(g + c * hi, 1.5) < 0)
-      hi *= 1.01;
-    lo = n_w * std::pow(g, 1.5);
-    for (int i = 0; i < 200; ++i)
-      {
-        const double mid = 0.5 * (lo + hi);
-        (mid - n_w * std::pow(g + c * mid, 1.5) < 0 ? lo : hi) = mid;
-      }
-    return 0.5 * (lo + hi);
-  }
-
   TEST(NonlocalBedSystem, SolverReachesChainClosedForm)
   {
     const double                       R = 0.01, E = 1.85e6, nu = 0.46;
@@ -274,15 +182,8 @@ namespace
             else
               converged = TrustRegionNewton().solve(system).converged;
             ASSERT_TRUE(converged) << n << ' ' << eps << ' ' << krylov;
-            Eigen::VectorXd F;
-            system.residual(F);
             const double P = chain_force(n, R, E, nu, Delta);
-            EXPECT_NEAR(system.wall_forces()[SquareDie::upper_punch],
-                        P,
-                        1e-6 * P);
-            EXPECT_NEAR(system.wall_forces()[SquareDie::lower_punch],
-                        P,
-                        1e-6 * P);
+            expect_punch_forces(system, P, 1e-6);
             // Eq. (17): D = a eps^{1/2} + 7/(24 pi^2) b^2 eps + O(eps^{3/2})
             // with eps = Delta / (2 N R) (gamma / 2R of a
             // sphere-sphere contact).
@@ -299,17 +200,10 @@ namespace
 
   TEST(NonlocalBedSystem, SquareDieBedBalancesWallForces)
   {
-    SquareDepositionParameters dp;
-    dp.width = 1e-3;
-    dp.sizes
-      = {{77.46e-6, 0.0161, 75e-6, 80e-6}, {144.5e-6, 0.0724, 125e-6, 167e-6}};
-    dp.counts                = {40, 6};
-    dp.seed                  = 4;
-    const ParticleSystem p   = square_die_deposition(dp);
-    double               top = 0.0;
+    const Cluster         bed = deposited_square_die_bed(1e-3, {40, 6}, 4);
+    const ParticleSystem &p   = bed.particles;
     for (std::size_t i = 0; i < p.size(); ++i)
       {
-        top = std::max(top, p.positions[i][2] + p.radii[i]);
         // Inside the die.
         EXPECT_LE(std::abs(p.positions[i][0]) + p.radii[i],
                   0.5e-3 * (1 + 1e-12));
@@ -317,9 +211,6 @@ namespace
                   0.5e-3 * (1 + 1e-12));
         EXPECT_GE(p.positions[i][2] - p.radii[i], -1e-12 * p.radii[i]);
       }
-    SquareDie die;
-    die.width              = 1e-3;
-    die.upper_punch_height = top;
     BedCompactionOptions o;
     o.final_density    = 0.60;
     o.density_step     = 0.01;
@@ -327,7 +218,7 @@ namespace
     for (const bool nonlocal : {false, true})
       {
         const BedCompactionResult r
-          = compact_square_die_bed(p, two_materials, die, nonlocal, o);
+          = compact_square_die_bed(p, two_materials, bed.die, nonlocal, o);
         ASSERT_TRUE(r.complete) << r.stop_reason;
         const BedCompactionPoint &last = r.points.back();
         ASSERT_TRUE(last.jammed);
@@ -335,9 +226,7 @@ namespace
         // Newton's third law at equilibrium (no gravity): opposite walls
         // carry the same force.
         const double tol = 1e-4 * w[SquareDie::upper_punch];
-        EXPECT_NEAR(w[SquareDie::lower_punch], w[SquareDie::upper_punch], tol);
-        EXPECT_NEAR(w[SquareDie::x_lower], w[SquareDie::x_upper], tol);
-        EXPECT_NEAR(w[SquareDie::y_lower], w[SquareDie::y_upper], tol);
+        expect_opposite_walls_balance(w, tol);
         EXPECT_GT(w[SquareDie::x_lower], 0.0);
       }
   }

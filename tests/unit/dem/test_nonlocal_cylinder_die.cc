@@ -12,6 +12,8 @@
 #include "dem/nonlocal/nonlocal_bed_system.h"
 #include "dem/nonlocal/nonlocal_trust_region.h"
 
+#include "nonlocal_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -22,10 +24,7 @@
 namespace
 {
   using namespace compax::dem;
-
-  constexpr double pi = 3.14159265358979323846;
-
-  const std::vector<ElasticMaterial> two_materials{{19e9, 0.30}, {7e9, 0.20}};
+  using namespace compax::dem::nonlocal_test;
 
   struct CylinderCluster
   {
@@ -62,22 +61,6 @@ namespace
     return c;
   }
 
-  Eigen::VectorXd
-  central_difference(NonlocalBedSystem     &system,
-                     const Eigen::VectorXd &v,
-                     const double           h)
-  {
-    auto                  x  = system.coordinates();
-    const Eigen::VectorXd x0 = x;
-    Eigen::VectorXd       Fp, Fm;
-    x = x0 + h * v;
-    system.residual(Fp);
-    x = x0 - h * v;
-    system.residual(Fm);
-    x = x0;
-    return (Fp - Fm) / (2 * h);
-  }
-
   TEST(NonlocalCylinderDie, JacobianWithCurvedWallIsCentralDifference)
   {
     for (const bool nonlocal : {false, true})
@@ -98,11 +81,8 @@ namespace
           // The ring is pressed against the curved wall, all six spheres.
           ASSERT_GT(system.wall_forces()[int(Wall::die)], 0.0);
           ASSERT_GE(system.n_loaded(), 6u + 6u + 6u + 2u * 7u);
-          std::mt19937                     gen(seed);
-          std::normal_distribution<double> normal;
-          Eigen::VectorXd                  v(3 * c.particles.size());
-          for (Eigen::Index k = 0; k < v.size(); ++k)
-            v[k] = normal(gen);
+          std::mt19937          gen(seed);
+          const Eigen::VectorXd v = random_vector(gen, 3 * c.particles.size());
           system.apply_jacobian(v, Jv);
           const Eigen::VectorXd fd
             = central_difference(system, v, 1e-8 * 100e-6);
@@ -118,26 +98,6 @@ namespace
               EXPECT_LE((Kv - fd).norm(), 1e-6 * fd.norm()) << seed;
             }
         }
-  }
-
-  /// P = n_w (Delta / 2N + c P)^{3/2} (Eqs. 10, 11 for a chain of N equal
-  /// spheres between rigid walls approaching by Delta), lower root by
-  /// bisection.
-  double
-  chain_force(unsigned int n, double R, double E, double nu, double Delta)
-  {
-    const double n_w = 4.0 / 3.0 * E / (1 - nu * nu) * std::sqrt(R);
-    const double c   = (1 + nu) * (3 - 2 * nu) / (4 * pi * R * E);
-    const double g   = Delta / (2.0 * n);
-    double       lo = n_w * std::pow(g, 1.5), hi = lo;
-    while (hi - n_w * std::pow(g + c * hi, 1.5) < 0)
-      hi *= 1.01;
-    for (int i = 0; i < 200; ++i)
-      {
-        const double mid = 0.5 * (lo + hi);
-        (mid - n_w * std::pow(g + c * mid, 1.5) < 0 ? lo : hi) = mid;
-      }
-    return 0.5 * (lo + hi);
   }
 
   TEST(NonlocalCylinderDie, ChainAcrossTheDieReachesClosedForm)

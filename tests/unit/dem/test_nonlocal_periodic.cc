@@ -7,6 +7,8 @@
 
 #include "dem/nonlocal/nonlocal_bed_system.h"
 
+#include "nonlocal_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,8 +18,7 @@
 namespace
 {
   using namespace compax::dem;
-
-  constexpr double pi = 3.14159265358979323846;
+  using namespace compax::dem::nonlocal_test;
 
   /// 2 x 2 x 2 simple cubic spheres of radius R at spacing a in a cubic
   /// periodic cell of side 2a (every particle touches two others through
@@ -58,16 +59,6 @@ namespace
     return c;
   }
 
-  /// Eq. (5) per unit force: the displacement of a contact point of a
-  /// sphere (R, E, nu) by a unit force at angle theta from it.
-  double
-  influence(const double R, const double E, const double nu, const double theta)
-  {
-    const double h = std::sin(theta / 2);
-    return (1 + nu) / (4 * pi * R * E)
-           * (-2 * (1 - nu) - 2 * (1 - 2 * nu) * h + (7 - 8 * nu) * h * h) / h;
-  }
-
   TEST(NonlocalPeriodic, SimpleCubicHydrostaticIsClosedForm)
   {
     const double R = 0.01;
@@ -87,26 +78,7 @@ namespace
             ASSERT_TRUE(F.allFinite());
             // Six contacts per sphere, each shared by two.
             EXPECT_EQ(system.n_loaded(), 24u);
-            // Equal spheres: n_H = 4/3 E* sqrt(R*), E* = E / 2(1 - nu^2),
-            // R* = R / 2. On each sphere a contact sees the opposite one
-            // (theta = pi) and four at theta = pi / 2; both spheres add.
-            const double n_H
-              = 4.0 / 3.0 * E / (2 * (1 - nu * nu)) * std::sqrt(R / 2);
-            const double gamma = 2 * R - a;
-            const double k     = nonlocal ? 2
-                                          * (influence(R, E, nu, pi)
-                                             + 4 * influence(R, E, nu, pi / 2))
-                                          : 0.0;
-            double       lo = n_H * std::pow(gamma, 1.5), hi = lo;
-            while (hi - n_H * std::pow(gamma + k * hi, 1.5) < 0)
-              hi *= 1.01;
-            for (int i = 0; i < 200; ++i)
-              {
-                const double mid = 0.5 * (lo + hi);
-                (mid - n_H * std::pow(gamma + k * mid, 1.5) < 0 ? lo : hi)
-                  = mid;
-              }
-            const double P = 0.5 * (lo + hi);
+            const double P = simple_cubic_force(R, E, nu, a, nonlocal);
             // The perfect lattice is in equilibrium.
             EXPECT_LE(F.cwiseAbs().maxCoeff(), 1e-9 * P);
             // sigma = -(1/V) sum P a e e^T: 8 contacts along each axis in
@@ -121,26 +93,9 @@ namespace
           }
   }
 
-  Eigen::VectorXd
-  central_difference(NonlocalBedSystem     &system,
-                     const Eigen::VectorXd &v,
-                     const double           h)
-  {
-    auto                  x  = system.coordinates();
-    const Eigen::VectorXd x0 = x;
-    Eigen::VectorXd       Fp, Fm;
-    x = x0 + h * v;
-    system.residual(Fp);
-    x = x0 - h * v;
-    system.residual(Fm);
-    x = x0;
-    return (Fp - Fm) / (2 * h);
-  }
-
   TEST(NonlocalPeriodic, JacobianInShearedCellIsCentralDifference)
   {
-    const std::vector<ElasticMaterial> two_materials{{19e9, 0.30}, {7e9, 0.20}};
-    const double                       R = 100e-6;
+    const double R = 100e-6;
     for (const bool nonlocal : {false, true})
       for (unsigned int seed : {2u, 3u})
         {
@@ -155,11 +110,8 @@ namespace
           system.assemble(F, K);
           ASSERT_TRUE(F.allFinite());
           ASSERT_GE(system.n_loaded(), 20u);
-          std::mt19937                     gen(seed);
-          std::normal_distribution<double> normal;
-          Eigen::VectorXd                  v(3 * c.particles.size());
-          for (Eigen::Index k = 0; k < v.size(); ++k)
-            v[k] = normal(gen);
+          std::mt19937          gen(seed);
+          const Eigen::VectorXd v = random_vector(gen, 3 * c.particles.size());
           system.apply_jacobian(v, Jv);
           const Eigen::VectorXd fd = central_difference(system, v, 1e-8 * R);
           system.residual(F);

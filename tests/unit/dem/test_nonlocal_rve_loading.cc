@@ -8,6 +8,8 @@
 #include "dem/rve/nonlocal_rve_loading.h"
 #include "dem/rve/periodic_packing.h"
 
+#include "nonlocal_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,17 +17,7 @@
 namespace
 {
   using namespace compax::dem;
-
-  constexpr double pi = 3.14159265358979323846;
-
-  /// Eq. (5) per unit force at angle theta.
-  double
-  influence(const double R, const double E, const double nu, const double theta)
-  {
-    const double h = std::sin(theta / 2);
-    return (1 + nu) / (4 * pi * R * E)
-           * (-2 * (1 - nu) - 2 * (1 - 2 * nu) * h + (7 - 8 * nu) * h * h) / h;
-  }
+  using namespace compax::dem::nonlocal_test;
 
   TEST(NonlocalRveLoading, SimpleCubicUnderHydrostaticStrainIsClosedForm)
   {
@@ -52,23 +44,8 @@ namespace
         const RveStepResult r
           = loading.deform_to(bed, (1 - eps) * Eigen::Matrix3d::Identity());
         ASSERT_TRUE(r.converged);
-        const double a     = 2 * R * (1 - eps);
-        const double gamma = 2 * R - a;
-        const double n_H
-          = 4.0 / 3.0 * E / (2 * (1 - nu * nu)) * std::sqrt(R / 2);
-        const double k
-          = nonlocal
-              ? 2 * (influence(R, E, nu, pi) + 4 * influence(R, E, nu, pi / 2))
-              : 0.0;
-        double lo = n_H * std::pow(gamma, 1.5), hi = lo;
-        while (hi - n_H * std::pow(gamma + k * hi, 1.5) < 0)
-          hi *= 1.01;
-        for (int i = 0; i < 200; ++i)
-          {
-            const double mid = 0.5 * (lo + hi);
-            (mid - n_H * std::pow(gamma + k * mid, 1.5) < 0 ? lo : hi) = mid;
-          }
-        const double          P = 0.5 * (lo + hi);
+        const double          a = 2 * R * (1 - eps);
+        const double          P = simple_cubic_force(R, E, nu, a, nonlocal);
         const Eigen::Matrix3d S = loading.stress(bed);
         EXPECT_NEAR(bed.relative_density(),
                     8 * 4.0 / 3.0 * pi * R * R * R

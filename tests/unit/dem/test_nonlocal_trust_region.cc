@@ -12,6 +12,8 @@
 #include "dem/nonlocal/square_die_deposition.h"
 #include "dem/solver/trust_region_newton.h"
 
+#include "nonlocal_test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,50 +23,7 @@
 namespace
 {
   using namespace compax::dem;
-
-  constexpr double pi = 3.14159265358979323846;
-
-  const std::vector<ElasticMaterial> two_materials{{19e9, 0.30}, {7e9, 0.20}};
-
-  struct Cluster
-  {
-    ParticleSystem particles;
-    SquareDie      die;
-  };
-
-  /// 2x2x2 spheres on a perturbed cubic lattice pressed by ~2 % of R
-  /// together and against the six walls.
-  Cluster
-  make_cluster(const unsigned int seed)
-  {
-    std::mt19937                           gen(seed);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    Cluster                                c;
-    const double                           R = 100e-6, a = 1.96 * R;
-    for (int k = 0; k < 2; ++k)
-      for (int j = 0; j < 2; ++j)
-        for (int i = 0; i < 2; ++i)
-          {
-            const Eigen::Vector3d x((i - 0.5) * a + 3e-3 * R * u(gen),
-                                    (j - 0.5) * a + 3e-3 * R * u(gen),
-                                    (k + 0.5) * a + 3e-3 * R * u(gen));
-            c.particles.add(x, R * (1.0 + 0.01 * u(gen)), (i + j + k) % 2);
-          }
-    c.die.width              = 2.0 * a;
-    c.die.lower_punch_height = 0.0;
-    c.die.upper_punch_height = 2.0 * a;
-    return c;
-  }
-
-  Eigen::VectorXd
-  random_vector(std::mt19937 &gen, const Eigen::Index n)
-  {
-    std::normal_distribution<double> normal;
-    Eigen::VectorXd                  v(n);
-    for (Eigen::Index k = 0; k < n; ++k)
-      v[k] = normal(gen);
-    return v;
-  }
+  using namespace compax::dem::nonlocal_test;
 
   TEST(NonlocalTrustRegion, FrozenAngleJacobianIsSymmetric)
   {
@@ -114,44 +73,6 @@ namespace
       }
   }
 
-  /// Chain of n spheres between the punches, approach Delta, the inner
-  /// spheres displaced from equilibrium.
-  Cluster
-  make_chain(unsigned int n, double R, double Delta)
-  {
-    Cluster      c;
-    const double H           = 2.0 * n * R - Delta;
-    c.die.width              = 10.0 * R;
-    c.die.upper_punch_height = H;
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        double z = (k + 0.5) * H / n;
-        if (k > 0 && k + 1 < n)
-          z += 0.2 * Delta / n * (k % 2 ? 1.0 : -1.0);
-        c.particles.add(Eigen::Vector3d(0, 0, z), R, 0);
-      }
-    return c;
-  }
-
-  /// P = n_w (Delta / 2N + c P)^{3/2} (Eqs. 10, 11), lower root by
-  /// bisection.
-  double
-  chain_force(unsigned int n, double R, double E, double nu, double Delta)
-  {
-    const double n_w = 4.0 / 3.0 * E / (1 - nu * nu) * std::sqrt(R);
-    const double c   = (1 + nu) * (3 - 2 * nu) / (4 * pi * R * E);
-    const double g   = Delta / (2.0 * n);
-    double       lo = n_w * std::pow(g, 1.5), hi = lo;
-    while (hi - n_w * std::pow(g + c * hi, 1.5) < 0)
-      hi *= 1.01;
-    for (int i = 0; i < 200; ++i)
-      {
-        const double mid = 0.5 * (lo + hi);
-        (mid - n_w * std::pow(g + c * mid, 1.5) < 0 ? lo : hi) = mid;
-      }
-    return 0.5 * (lo + hi);
-  }
-
   TEST(NonlocalTrustRegion, ReachesChainClosedForm)
   {
     const double                       R = 0.01, E = 1.85e6, nu = 0.46;
@@ -172,15 +93,8 @@ namespace
               {
                 EXPECT_EQ(r.krylov_iterations, 0);
               }
-            Eigen::VectorXd F;
-            system.residual(F);
             const double P = chain_force(n, R, E, nu, Delta);
-            EXPECT_NEAR(system.wall_forces()[SquareDie::upper_punch],
-                        P,
-                        1e-6 * P);
-            EXPECT_NEAR(system.wall_forces()[SquareDie::lower_punch],
-                        P,
-                        1e-6 * P);
+            expect_punch_forces(system, P, 1e-6);
           }
   }
 
@@ -200,36 +114,22 @@ namespace
         EXPECT_LE(max_particle_norm(F), 1e-6 * sums.mean_force);
         const auto  &w   = system.wall_forces();
         const double tol = 1e-5 * w[SquareDie::upper_punch];
-        EXPECT_NEAR(w[SquareDie::lower_punch], w[SquareDie::upper_punch], tol);
-        EXPECT_NEAR(w[SquareDie::x_lower], w[SquareDie::x_upper], tol);
-        EXPECT_NEAR(w[SquareDie::y_lower], w[SquareDie::y_upper], tol);
+        expect_opposite_walls_balance(w, tol);
       }
   }
 
   TEST(NonlocalTrustRegion, HertzConsolidationRunsNoFixedPoint)
   {
-    SquareDepositionParameters dp;
-    dp.width = 1e-3;
-    dp.sizes
-      = {{77.46e-6, 0.0161, 75e-6, 80e-6}, {144.5e-6, 0.0724, 125e-6, 167e-6}};
-    dp.counts                = {40, 6};
-    dp.seed                  = 4;
-    const ParticleSystem p   = square_die_deposition(dp);
-    double               top = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      top = std::max(top, p.positions[i][2] + p.radii[i]);
-    SquareDie die;
-    die.width              = 1e-3;
-    die.upper_punch_height = top;
+    const Cluster bed = deposited_square_die_bed(1e-3, {40, 6}, 4);
     for (const bool hertz_consolidation : {true, false})
       {
         BedCompactionOptions o;
-        o.final_density       = 0.62;
-        o.density_step        = 0.01;
-        o.jamming_pressure    = 2e5;
-        o.hertz_consolidation = hertz_consolidation;
-        const BedCompactionResult r
-          = compact_square_die_bed(p, two_materials, die, true, o);
+        o.final_density             = 0.62;
+        o.density_step              = 0.01;
+        o.jamming_pressure          = 2e5;
+        o.hertz_consolidation       = hertz_consolidation;
+        const BedCompactionResult r = compact_square_die_bed(
+          bed.particles, two_materials, bed.die, true, o);
         ASSERT_TRUE(r.complete) << r.stop_reason;
         std::size_t unjammed_sweeps = 0, jammed_sweeps = 0;
         for (const auto &pt : r.points)
@@ -244,17 +144,10 @@ namespace
         // the same force (no gravity).
         const auto  &w   = r.points.back().wall_force;
         const double tol = 1e-4 * w[SquareDie::upper_punch];
-        EXPECT_NEAR(w[SquareDie::lower_punch], w[SquareDie::upper_punch], tol);
-        EXPECT_NEAR(w[SquareDie::x_lower], w[SquareDie::x_upper], tol);
-        EXPECT_NEAR(w[SquareDie::y_lower], w[SquareDie::y_upper], tol);
+        expect_opposite_walls_balance(w, tol);
         EXPECT_GT(r.points.back().nonlocal_ratio, 0.0);
       }
   }
-} // namespace
-
-namespace
-{
-  using namespace compax::dem;
 
   TEST(NonlocalTrustRegion, SmallBedCompactsToHighDensity)
   {
@@ -262,19 +155,7 @@ namespace
     // every step converges and ends in equilibrium (opposite walls carry
     // the same force), and the nonlocal bed carries more load than the
     // Hertz bed (the nonlocal terms of the opposite contacts add overlap).
-    SquareDepositionParameters dp;
-    dp.width = 0.8e-3;
-    dp.sizes
-      = {{77.46e-6, 0.0161, 75e-6, 80e-6}, {144.5e-6, 0.0724, 125e-6, 167e-6}};
-    dp.counts                = {50, 7};
-    dp.seed                  = 2;
-    const ParticleSystem p   = square_die_deposition(dp);
-    double               top = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      top = std::max(top, p.positions[i][2] + p.radii[i]);
-    SquareDie die;
-    die.width              = dp.width;
-    die.upper_punch_height = top;
+    const Cluster        bed = deposited_square_die_bed(0.8e-3, {50, 7}, 2);
     BedCompactionOptions o;
     o.final_density    = 0.75;
     o.density_step     = 0.01;
@@ -282,8 +163,8 @@ namespace
     double load[2];
     for (const bool nonlocal : {false, true})
       {
-        const BedCompactionResult r
-          = compact_square_die_bed(p, two_materials, die, nonlocal, o);
+        const BedCompactionResult r = compact_square_die_bed(
+          bed.particles, two_materials, bed.die, nonlocal, o);
         ASSERT_TRUE(r.complete) << r.stop_reason;
         const auto &last = r.points.back();
         EXPECT_NEAR(last.relative_density, 0.75, 1e-9);
@@ -291,9 +172,7 @@ namespace
           EXPECT_TRUE(pt.converged);
         const auto  &w   = last.wall_force;
         const double tol = 1e-4 * w[SquareDie::upper_punch];
-        EXPECT_NEAR(w[SquareDie::lower_punch], w[SquareDie::upper_punch], tol);
-        EXPECT_NEAR(w[SquareDie::x_lower], w[SquareDie::x_upper], tol);
-        EXPECT_NEAR(w[SquareDie::y_lower], w[SquareDie::y_upper], tol);
+        expect_opposite_walls_balance(w, tol);
         load[nonlocal] = w[SquareDie::upper_punch];
       }
     EXPECT_GT(load[1], load[0]);
