@@ -3,6 +3,7 @@
 #include "dem/rve/periodic_bed_system.h"
 #include "fem/isotropic_elasticity.h"
 
+#include <chrono>
 #include <cmath>
 
 namespace compax::coupling
@@ -35,6 +36,14 @@ namespace compax::coupling
         for (int j = 0; j < 3; ++j)
           m(i, j) = t[i][j];
       return m;
+    }
+
+    double
+    seconds_since(const std::chrono::steady_clock::time_point &start)
+    {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now()
+                                           - start)
+        .count();
     }
 
     dealii::SymmetricTensor<2, 3>
@@ -84,6 +93,7 @@ namespace compax::coupling
   void
   RveMaterial::make_templates(const double rho) const
   {
+    const auto start = std::chrono::steady_clock::now();
     templates.clear();
     template_jamming_density.clear();
     if (!spec.pool.empty())
@@ -104,6 +114,7 @@ namespace compax::coupling
       template_modulus.push_back(
         std::max(tangent.compute(cell, model).condensed(axis, axis), 0.0));
     template_density = rho;
+    counters.pool_seconds += seconds_since(start);
   }
 
   void
@@ -148,16 +159,20 @@ namespace compax::coupling
     for (double &v : h)
       v = 0.0;
     h[density_at] = rho;
-    // A point that starts jammed (e.g. a lattice pool) reports its
-    // packing's modulus from the start: the contact penalty scales with it.
-    const std::size_t pooled = point % templates.size();
-    h[modulus_at]
-      = spec.tangent_floor_modulus
-        + (rho >= template_jamming_density[pooled] ? template_modulus[pooled]
-                                                   : 0.0);
-    h[point_at]  = static_cast<double>(point);
-    h[step_at]   = 0.0;
-    h[jammed_at] = 0.0;
+    // The point reports its packing's jammed modulus from the start: the
+    // die-wall penalty scales with it, and a penalty set by the floor
+    // alone lets the die give way when the point jams.
+    const std::size_t pooled = pool_member(point);
+    h[modulus_at] = spec.tangent_floor_modulus + template_modulus[pooled];
+    h[point_at]   = static_cast<double>(point);
+    h[step_at]    = 0.0;
+    h[jammed_at]  = 0.0;
+  }
+
+  std::size_t
+  RveMaterial::pool_member(const std::size_t point) const
+  {
+    return (point / std::max(spec.points_per_cell, 1u)) % templates.size();
   }
 
   bool
@@ -206,6 +221,7 @@ namespace compax::coupling
     cell = start;
     if (solve_at(cell, F))
       return true;
+    ++counters.continuations;
     // Continuation: halved sub-steps from the start of the step, grown
     // back after successes; histories stay frozen throughout.
     cell                     = start;
@@ -246,7 +262,6 @@ namespace compax::coupling
     const double          volume_ratio = (I + deps).determinant();
     if (!(volume_ratio > 0.0))
       return false;
-    const double rho_trial = old_h[density_at] / volume_ratio;
 
     // A point switches to its jammed packing at the start of the step
     // after its density passed the packing's jamming density (decided on
@@ -255,7 +270,7 @@ namespace compax::coupling
     // overshoot of that last unjammed step is applied to the packing as
     // uniaxial compaction, the kinematics it was consolidated in.
     dem::PeriodicBed &cell    = trial[point];
-    const std::size_t pooled  = point % templates.size();
+    const std::size_t pooled  = pool_member(point);
     const double      rho_old = old_h[density_at];
     const bool        jammed
       = is_jammed(old_h) || rho_old >= template_jamming_density[pooled];
@@ -263,26 +278,37 @@ namespace compax::coupling
     dem::Matrix6d   C     = dem::Matrix6d::Zero();
     if (jammed)
       {
-        const bool              switching = !is_jammed(old_h);
-        const dem::PeriodicBed &start
-          = switching ? templates[pooled] : committed[point];
-        Eigen::Matrix3d overshoot = I;
-        if (switching)
-          overshoot(spec.compaction_axis, spec.compaction_axis)
-            = template_jamming_density[pooled] / rho_old;
-        const Eigen::Matrix3d F = (I + deps) * overshoot * start.deformation;
-        if (!equilibrate_at(cell, start, F))
-          return false;
-      }
-    if (jammed)
-      {
-        sigma = dem::love_weber_stress(cell);
-        try
+        // The RVE: equilibrium at the trial deformation, its stress and
+        // condensed tangent (timed: the RVE share of an FE2 run).
+        const auto solve = [&]() {
+          const bool              switching = !is_jammed(old_h);
+          const dem::PeriodicBed &start
+            = switching ? templates[pooled] : committed[point];
+          Eigen::Matrix3d overshoot = I;
+          if (switching)
+            overshoot(spec.compaction_axis, spec.compaction_axis)
+              = template_jamming_density[pooled] / rho_old;
+          const Eigen::Matrix3d F = (I + deps) * overshoot * start.deformation;
+          if (!equilibrate_at(cell, start, F))
+            return false;
+          sigma = dem::love_weber_stress(cell);
+          try
+            {
+              C = tangent.compute(cell, model).condensed;
+            }
+          catch (const std::runtime_error &)
+            {
+              return false;
+            }
+          return true;
+        };
+        const auto t0 = std::chrono::steady_clock::now();
+        const bool ok = solve();
+        counters.seconds += seconds_since(t0);
+        ++counters.solves;
+        if (!ok)
           {
-            C = tangent.compute(cell, model).condensed;
-          }
-        catch (const std::runtime_error &)
-          {
+            ++counters.failures;
             return false;
           }
       }
@@ -306,10 +332,11 @@ namespace compax::coupling
       = jammed ? cell.relative_density() : rho_old / volume_ratio;
     // A representative modulus for the contact penalty: the axial entry of
     // the tangent (uniaxial-strain modulus) plus the floor.
-    const int axis    = static_cast<int>(spec.compaction_axis);
-    new_h[modulus_at] = std::max(C(axis, axis), 0.0) + Ef;
-    new_h[step_at]    = old_h[step_at] + 1.0;
-    new_h[jammed_at]  = jammed ? 1.0 : 0.0;
+    const int axis = static_cast<int>(spec.compaction_axis);
+    new_h[modulus_at]
+      = (jammed ? std::max(C(axis, axis), 0.0) : template_modulus[pooled]) + Ef;
+    new_h[step_at]   = old_h[step_at] + 1.0;
+    new_h[jammed_at] = jammed ? 1.0 : 0.0;
     return true;
   }
 

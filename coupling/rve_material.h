@@ -19,9 +19,15 @@ namespace compax::coupling
     dem::PeriodicPackingSpec packing;
     dem::RveLoadingOptions   loading;
     /// Distinct packings drawn (seeds packing.seed + k); point n starts
-    /// from a copy of packing n mod pool_size, so start-up costs
-    /// pool_size packings, not one per point.
+    /// from a copy of packing (n / points_per_cell) mod pool_size, so
+    /// start-up costs pool_size packings, not one per point.
     unsigned int pool_size = 4;
+    /// Consecutive points that start from the same pool packing [-]: the
+    /// quadrature points of one cell (the solver numbers points cell by
+    /// cell), so that a cell's points jam in the same step, not one by one
+    /// at their packings' different jamming densities (which strains the
+    /// still loose ones hard). 1: point n takes packing n mod pool_size.
+    unsigned int points_per_cell = 1;
     /// Index of the compaction axis in the tablet model's stress frame
     /// (r-z model: 1, the axial row of (r, z, theta); 3-D: 2) [-]: the
     /// axis along which the pool packings are consolidated.
@@ -41,6 +47,28 @@ namespace compax::coupling
     /// small once the powder is jammed (1 MPa: ~0.5 MPa of stress after
     /// compaction from 0.5 to 0.9).
     double tangent_floor_modulus = 1e6;
+    /// Relative accuracy of the homogenized stress the continuum Newton
+    /// balances to [-] (MaterialModel::stress_resolution): an RVE's stress
+    /// is piecewise smooth, contacts opening, closing or switching between
+    /// loading and unloading change it by ~1e-4 of its magnitude between
+    /// neighbouring trial strains, and a tighter tolerance only makes the
+    /// continuum Newton wander at that level.
+    double stress_resolution = 1e-3;
+  };
+
+  /// Work of the RVEs of one MPI rank so far (the RVE share of an FE2 run).
+  struct RveMaterialCounters
+  {
+    /// Trial RVE solves (equilibrium, stress and condensed tangent) [-].
+    std::size_t solves = 0;
+    /// ... of which fell back from the affine predictor to continuation [-].
+    std::size_t continuations = 0;
+    /// ... of which found no equilibrium (the continuum step is cut) [-].
+    std::size_t failures = 0;
+    /// Wall time in them [s].
+    double seconds = 0.0;
+    /// Wall time of drawing and consolidating the pool at start-up [s].
+    double pool_seconds = 0.0;
   };
 
   /**
@@ -64,6 +92,9 @@ namespace compax::coupling
    * point. Equilibrium from the affine predictor falls back to
    * continuation (sub-steps of the increment, histories frozen) so the
    * trial stays a function of the committed cell and the increment only.
+   * Every point reports its
+   * packing's jammed modulus from the start, which sets the die-wall
+   * penalty (set by the floor, the die gives way when points jam).
    *
    * Commit without a solver hook: the history holds the point's RVE index
    * and a step counter that each evaluation increments in the trial
@@ -75,8 +106,8 @@ namespace compax::coupling
    * rigidly with the stress (objectivity of the updated-Lagrangian scheme).
    *
    * Not thread-safe (assembly is serial per MPI rank); the RVEs live with
-   * their rank's quadrature points. Tablet checkpoints do not yet hold the
-   * RVEs.
+   * their rank's quadrature points. Tablet checkpoints hold them
+   * (save_state(), load_state()).
    */
   class RveMaterial : public fem::MaterialModel
   {
@@ -117,9 +148,30 @@ namespace compax::coupling
     double
     youngs_modulus(dealii::ArrayView<const double> history) const override;
 
+    double
+    stress_resolution() const override
+    {
+      return spec.stress_resolution;
+    }
+
     void
     rotate(dealii::ArrayView<double>   history,
            const dealii::Tensor<2, 3> &R) const override;
+
+    /// Writes the rank's RVEs (committed and trial cell and committed
+    /// counter of every point) and the pool to folder/rve.<rank>.h5,
+    /// atomically (rve_material_checkpoint.cc).
+    void
+    save_state(const std::filesystem::path &folder,
+               unsigned int                 rank) const override;
+
+    /// Restores what save_state() wrote into a material whose points were
+    /// initialized as in the saved run; throws std::runtime_error if the
+    /// file is missing or malformed, holds another number of points or
+    /// another pool.
+    void
+    load_state(const std::filesystem::path &folder,
+               unsigned int                 rank) const override;
 
     /// Relative density at which pool packing k jams [-].
     double
@@ -139,6 +191,13 @@ namespace compax::coupling
       return committed.size();
     }
 
+    /// RVE work of this rank so far.
+    const RveMaterialCounters &
+    counters_so_far() const
+    {
+      return counters;
+    }
+
     /// The committed cell of a point (tests, output).
     const dem::PeriodicBed &
     committed_cell(std::size_t point) const
@@ -147,6 +206,10 @@ namespace compax::coupling
     }
 
   private:
+    /// Index of the pool packing `point` starts from.
+    std::size_t
+    pool_member(std::size_t point) const;
+
     /// Promotes the last trial of `point` if the solver committed it.
     void
     catch_up(std::size_t point, double committed_step) const;
@@ -190,6 +253,7 @@ namespace compax::coupling
     mutable dem::TrustRegionNewton        newton;
     mutable dem::FireRelaxation           fire;
     mutable dem::TangentCalculator        tangent;
+    mutable RveMaterialCounters           counters;
   };
 
   /// The 4th-order tensor of a Voigt matrix with engineering shears

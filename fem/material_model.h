@@ -4,6 +4,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <filesystem>
 #include <string>
 
 namespace compax::fem
@@ -98,6 +99,19 @@ namespace compax::fem
     youngs_modulus(dealii::ArrayView<const double> history) const = 0;
 
     /**
+     * Relative accuracy of the stresses this law returns [-]: the solver
+     * does not ask for an equilibrium residual below it (times the force
+     * scale). Closed-form laws: 0. A law that solves a sub-problem to a
+     * tolerance, or whose response switches discontinuously at this level
+     * (an RVE's contact events), cannot be balanced more finely.
+     */
+    virtual double
+    stress_resolution() const
+    {
+      return 0.0;
+    }
+
+    /**
      * Rotates the tensorial history by the rotation @p R of a converged
      * increment (objectivity of the hypoelastic update, applied when the
      * increment is committed). Default: rotates stress and plastic strain
@@ -106,6 +120,31 @@ namespace compax::fem
     virtual void
     rotate(dealii::ArrayView<double>   history,
            const dealii::Tensor<2, 3> &R) const = 0;
+
+    /**
+     * Writes the state a law keeps outside the quadrature histories (e.g.
+     * the RVE of every material point of an FE2 law) to @p folder, in files
+     * of MPI rank @p rank only; called by the solver's checkpoint beside
+     * its own file of that rank. Default: nothing (a law whose whole state
+     * is in the histories). Throws std::runtime_error if it cannot write.
+     */
+    virtual void
+    save_state(const std::filesystem::path & /*folder*/,
+               unsigned int /*rank*/) const
+    {
+    }
+
+    /**
+     * Restores the state save_state() wrote for MPI rank @p rank, after the
+     * solver has initialized its points (the same points, in the same
+     * order) and loaded their histories. Default: nothing. Throws
+     * std::runtime_error if the files are missing or do not match.
+     */
+    virtual void
+    load_state(const std::filesystem::path & /*folder*/,
+               unsigned int /*rank*/) const
+    {
+    }
   };
 
   /// Packs the 6 independent components of @p t at @p offset of @p h.

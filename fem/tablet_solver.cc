@@ -608,6 +608,9 @@ namespace compax::fem
     // of the stiffest material over a punch face.
     const double floor
       = 1e-9 * eps_n * h_min / settings.penalty_factor * punch_area();
+    // The material's stresses are resolved no finer than its resolution.
+    const double tolerance
+      = std::max(settings.tolerance, material->stress_resolution());
     dealii::SolverControl                  control(1, 0.0);
     dealii::TrilinosWrappers::SolverDirect direct(
       control,
@@ -647,7 +650,7 @@ namespace compax::fem
             && dealii::Utilities::MPI::this_mpi_process(comm) == 0)
           std::cerr << "  newton " << iterations << " residual " << res
                     << " scale " << scale << " step " << alpha << '\n';
-        if (res <= settings.tolerance * scale)
+        if (res <= tolerance * scale)
           return true;
         if (newton >= settings.max_iterations)
           break;
@@ -791,8 +794,11 @@ namespace compax::fem
     put_vector(out, last_du);
     material_history.save(out);
     friction_history.save(out);
+    out.close();
     if (!out)
       throw std::runtime_error("cannot write checkpoint " + file.string());
+    // State the material keeps outside the histories (e.g. FE2 RVEs).
+    material->save_state(folder, rank);
   }
 
   template <int dim>
@@ -825,6 +831,7 @@ namespace compax::fem
         || !material_history.load(in) || !friction_history.load(in))
       throw std::runtime_error(
         what + "does not match this mesh, material or partition");
+    material->load_state(folder, rank);
     u_ghost = u;
     du      = 0.0;
   }

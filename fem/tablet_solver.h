@@ -60,7 +60,8 @@ namespace compax::fem
     /// softer stick spring keeps Newton from cycling between stick and slip
     /// on load reversal.
     double tangential_penalty_ratio = 0.1;
-    /// Newton: relative residual tolerance [-] and iteration limit.
+    /// Newton: relative residual tolerance [-] (raised to the material's
+    /// stress_resolution()) and iteration limit.
     double       tolerance      = 1e-8;
     unsigned int max_iterations = 30;
     /// Times a load increment may be halved before giving up [-].
@@ -281,7 +282,9 @@ namespace compax::fem
     /**
      * Writes the converged state (displacement, material and friction
      * history, punch positions, predictor) to @p folder as
-     * solver.<rank>.bin, one file per MPI rank.
+     * solver.<rank>.bin, one file per MPI rank, and has the material write
+     * the state it keeps outside the histories beside it
+     * (MaterialModel::save_state()).
      */
     void
     save_state(const std::filesystem::path &folder) const;
@@ -289,7 +292,8 @@ namespace compax::fem
     /**
      * Restores a state written by save_state() with the same settings,
      * material and number of MPI ranks (the distributed mesh is then
-     * partitioned identically). Throws std::runtime_error otherwise.
+     * partitioned identically), the material's own state included
+     * (MaterialModel::load_state()). Throws std::runtime_error otherwise.
      */
     void
     load_state(const std::filesystem::path &folder);

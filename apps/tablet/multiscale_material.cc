@@ -17,8 +17,9 @@ namespace compax::cli
     prm.declare_entry("Pool size",
                       "4",
                       dealii::Patterns::Integer(1, 1000),
-                      "multiscale-fe2: distinct RVE packings; quadrature "
-                      "point n starts from a copy of packing n mod pool size "
+                      "multiscale-fe2: distinct RVE packings; the quadrature "
+                      "points of cell n start from copies of packing n mod "
+                      "pool size "
                       "(start-up costs this many packings), in [1, 1000]. "
                       "Unit: -.");
     declare_quantity(prm,
@@ -31,6 +32,15 @@ namespace compax::cli
                      "stress and tangent are added), so that points whose "
                      "powder has no contact network yet keep the continuum "
                      "Newton well-posed.");
+    prm.declare_entry("FE2 stress resolution",
+                      "1e-3",
+                      dealii::Patterns::Double(0.0, 0.1),
+                      "multiscale-fe2: relative accuracy of the homogenized "
+                      "stress; the continuum Newton tolerance is raised to "
+                      "it, in [0, 0.1]. An RVE's stress is piecewise smooth: "
+                      "contact events change it by ~1e-4 of its magnitude "
+                      "between neighbouring trial strains, below which "
+                      "Newton cannot balance it. Unit: -.");
     prm.leave_subsection();
   }
 
@@ -47,7 +57,8 @@ namespace compax::cli
                            const std::string           &model,
                            const std::filesystem::path &folder,
                            const bool                   write_files,
-                           const unsigned int           compaction_axis)
+                           const unsigned int           compaction_axis,
+                           const unsigned int           points_per_cell)
   {
     prm.enter_subsection("Multiscale");
     const DatabaseStudy       study = get_database_study(prm, "Multiscale/");
@@ -57,6 +68,8 @@ namespace compax::cli
     fe2.pool_size             = prm.get_integer("Pool size");
     fe2.tangent_floor_modulus = prm.get_double("Tangent floor modulus");
     fe2.compaction_axis       = compaction_axis;
+    fe2.points_per_cell       = points_per_cell;
+    fe2.stress_resolution     = prm.get_double("FE2 stress resolution");
     prm.leave_subsection();
 
     if (model == "multiscale-fe2")

@@ -29,7 +29,8 @@ namespace compax::cli
    *    and returns the Drucker-Prager Cap fitted to it;
    *  - multiscale-fe2: an RVE per quadrature point (coupling::RveMaterial)
    *    whose packings are consolidated along `compaction_axis`, the axial
-   *    row of the tablet model's stress frame.
+   *    row of the tablet model's stress frame; the `points_per_cell`
+   *    quadrature points of a cell start from the same packing.
    * Only a `write_files` caller writes the database files (rank 0 of an
    * MPI run). Throws std::runtime_error when the database's RVE does not
    * converge.
@@ -39,5 +40,6 @@ namespace compax::cli
                            const std::string           &model,
                            const std::filesystem::path &folder,
                            bool                         write_files,
-                           unsigned int                 compaction_axis);
+                           unsigned int                 compaction_axis,
+                           unsigned int                 points_per_cell);
 } // namespace compax::cli

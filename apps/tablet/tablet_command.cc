@@ -6,6 +6,7 @@
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
+#include "coupling/rve_material.h"
 #include "fem/drucker_prager_cap.h"
 #include "fem/linear_elastic_material.h"
 #include "fem/tablet_process.h"
@@ -288,7 +289,8 @@ namespace compax::cli
                        open(0.0, 1.0),
                        "-",
                        "Newton tolerance on the residual relative to the "
-                       "internal and contact forces.");
+                       "internal and contact forces (multiscale-fe2: at "
+                       "least Multiscale/FE2 stress resolution).");
       declare_quantity(prm,
                        "Max iterations",
                        "30",
@@ -548,14 +550,6 @@ namespace compax::cli
       s.write_hdf5          = prm.get_bool("Write HDF5");
       s.checkpoint_interval = prm.get_integer("Checkpoint interval");
       s.resume_from         = prm.get("Resume from");
-      if (!s.resume_from.empty() && s.multiscale_model == "multiscale-fe2")
-        {
-          prm.leave_subsection();
-          reject_entry("Resume from",
-                       s.resume_from,
-                       "cannot resume a multiscale-fe2 run: tablet "
-                       "checkpoints do not hold the RVE states yet");
-        }
       if (!s.resume_from.empty()
           && !std::filesystem::is_directory(std::filesystem::path(s.resume_from)
                                             / "checkpoint"))
@@ -592,6 +586,39 @@ namespace compax::cli
       double peak_ejection_force = 0.0;
       bool   ejected             = false;
     };
+
+    /// For an FE2 run, the time its RVEs took (summed and slowest rank)
+    /// against the run's wall time since @p start, as a summary line; empty
+    /// for other materials. Collective.
+    std::string
+    rve_time_share(const fem::MaterialModel                    &material,
+                   const std::chrono::steady_clock::time_point &start,
+                   MPI_Comm                                     comm)
+    {
+      const auto *fe2 = dynamic_cast<const coupling::RveMaterial *>(&material);
+      if (fe2 == nullptr)
+        return {};
+      const coupling::RveMaterialCounters &c    = fe2->counters_so_far();
+      const double                         wall = std::chrono::duration<double>(
+                            std::chrono::steady_clock::now() - start)
+                            .count();
+      const double slowest = dealii::Utilities::MPI::max(c.seconds, comm);
+      const double total   = dealii::Utilities::MPI::sum(c.seconds, comm);
+      const auto   count   = [&](const std::size_t n) {
+        return static_cast<unsigned long long>(
+          dealii::Utilities::MPI::sum(static_cast<double>(n), comm));
+      };
+      std::ostringstream out;
+      out << std::setprecision(4) << "RVE solves: " << count(c.solves) << " ("
+          << count(c.continuations) << " by continuation, " << count(c.failures)
+          << " failed), " << total << " s on all ranks, " << slowest
+          << " s on the busiest rank, of " << wall << " s wall ("
+          << 100.0 * slowest / std::max(wall, 1e-300)
+          << " %; the rest is the FEM: assembly, linear solves, output); "
+          << "pool consolidated at start-up in "
+          << dealii::Utilities::MPI::max(c.pool_seconds, comm) << " s\n";
+      return out.str();
+    }
 
     constexpr std::uint64_t steps_magic = 0x636f6d7061785331; // compaxS1
 
@@ -922,8 +949,11 @@ namespace compax::cli
         write_fields(last);
       if (!converged && setup.checkpoint_interval > 0)
         checkpoint();
+      const std::string rve_share
+        = rve_time_share(*setup.material, start, comm);
       if (root)
         {
+          std::cout << rve_share;
           csv->close();
           std::cout << "Tablet cycle " << (converged ? "completed" : "STOPPED")
                     << ":\n  max upper punch pressure     "
@@ -1050,13 +1080,15 @@ namespace compax::cli
             try
               {
                 // The axial row of the model's stress frame: (r, z, theta)
-                // in r-z, (x, y, z) in 3-D.
-                setup.material
-                  = make_multiscale_material(prm,
-                                             setup.multiscale_model,
-                                             shared,
-                                             writer,
-                                             setup.three_d ? 2u : 1u);
+                // in r-z, (x, y, z) in 3-D; Gauss points per cell.
+                const unsigned int dim = setup.three_d ? 3 : 2;
+                setup.material         = make_multiscale_material(
+                  prm,
+                  setup.multiscale_model,
+                  shared,
+                  writer,
+                  dim - 1,
+                  dealii::Utilities::pow(setup.solver.degree + 1, dim));
               }
             catch (const std::runtime_error &e)
               {

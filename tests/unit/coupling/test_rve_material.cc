@@ -1,5 +1,7 @@
 #include "coupling/rve_material.h"
 
+#include "fe2_test_support.h"
+
 
 #include <gtest/gtest.h>
 
@@ -10,25 +12,8 @@ using namespace compax;
 
 namespace
 {
-  coupling::RveMaterialSpec
-  small_spec()
-  {
-    coupling::RveMaterialSpec spec;
-    spec.packing.particle_count              = 60;
-    spec.packing.sizes.median_radius         = 220e-6;
-    spec.packing.seed                        = 9;
-    spec.pool_size                           = 1;
-    spec.loading.equilibrium.force_tolerance = 1e-10;
-    spec.loading.equilibrium.step_tolerance  = 1e-10;
-    return spec;
-  }
-
-  dem::ContactModel
-  material1()
-  {
-    return dem::ContactModel(dem::ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
-                             1.26e6);
-  }
+  using compax::testing::material1;
+  using compax::testing::small_drawn_spec;
 
   fem::MaterialIncrement
   uniaxial(const double eps_zz)
@@ -61,7 +46,7 @@ namespace
 /// cut (never committed) trial leaves no trace.
 TEST(RveMaterial, CommitsOnlyCommittedIncrements)
 {
-  coupling::RveMaterial m(small_spec(), material1());
+  coupling::RveMaterial m(small_drawn_spec(), material1());
   std::vector<double>   h(m.n_history());
   m.initialize(0.60, h);
   const double rho0 = m.relative_density(h);
@@ -92,7 +77,7 @@ TEST(RveMaterial, CommitsOnlyCommittedIncrements)
 /// by O(|deps|) = 2e-4, well below the 1e-3 asserted.
 TEST(RveMaterial, TangentIsDerivativeOfStressInTheIncrement)
 {
-  coupling::RveMaterial m(small_spec(), material1());
+  coupling::RveMaterial m(small_drawn_spec(), material1());
   std::vector<double>   h(m.n_history());
   m.initialize(0.60, h);
   compact(m, h, 20, -0.01);

@@ -34,7 +34,9 @@ namespace
 
   /// A ring of six spheres pressed against the curved die wall (overlap
   /// ~1.5 % of R) and against a centre sphere and each other (~2 %), all
-  /// between the two punches (~1 %), with random perturbations.
+  /// between the two punches (~1 %), with random perturbations (radii
+  /// 0.3 %, centres 0.3 %, the centre sphere 0.7 % off the axis: every
+  /// contact stays closed).
   CylinderCluster
   make_ring(const unsigned int seed)
   {
@@ -42,17 +44,20 @@ namespace
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     CylinderCluster                        c;
     const double                           R = 100e-6, r0 = 1.98 * R;
-    const auto                             jitter
-      = [&]() { return Eigen::Vector3d(u(gen), u(gen), u(gen)) * 3e-3 * R; };
-    c.particles.add(Eigen::Vector3d(0.01 * R, -0.02 * R, 0) + jitter(),
-                    R * (1.0 + 0.01 * u(gen)),
+    const auto                             jitter = [&]() -> Eigen::Vector3d {
+      // The return type evaluates the product (an Eigen expression
+      // returned by value would refer to the destroyed temporary).
+      return Eigen::Vector3d(u(gen), u(gen), u(gen)) * 3e-3 * R;
+    };
+    c.particles.add(Eigen::Vector3d(0.005 * R, -0.005 * R, 0) + jitter(),
+                    R * (1.0 + 0.003 * u(gen)),
                     0);
     for (int k = 0; k < 6; ++k)
       {
         const double t = k * pi / 3.0 + 0.1;
         c.particles.add(Eigen::Vector3d(r0 * std::cos(t), r0 * std::sin(t), 0)
                           + jitter(),
-                        R * (1.0 + 0.01 * u(gen)),
+                        R * (1.0 + 0.003 * u(gen)),
                         k % 2);
       }
     c.die.diameter    = 2.0 * 2.965 * R;
