@@ -110,9 +110,14 @@ namespace compax::coupling
       }
     const int axis = static_cast<int>(spec.compaction_axis);
     template_modulus.clear();
+    template_tangent.clear();
     for (dem::PeriodicBed &cell : templates)
-      template_modulus.push_back(
-        std::max(tangent.compute(cell, model).condensed(axis, axis), 0.0));
+      {
+        template_tangent.push_back(
+          from_voigt(tangent.compute(cell, model).condensed));
+        template_modulus.push_back(
+          std::max(template_tangent.back()[axis][axis][axis][axis], 0.0));
+      }
     template_density = rho;
     counters.pool_seconds += seconds_since(start);
   }
@@ -323,6 +328,8 @@ namespace compax::coupling
       = fem::load(old_h, floor_stress_at) + floor * increment.strain_increment;
     response.stress  = from_eigen(sigma) + floor_stress;
     response.tangent = from_voigt(C) + floor;
+    if (!jammed)
+      add_jamming_ramp(increment, rho_old, pooled, response);
 
     for (unsigned int k = 0; k < n_history(); ++k)
       new_h[k] = old_h[k];
@@ -338,6 +345,33 @@ namespace compax::coupling
     new_h[step_at]   = old_h[step_at] + 1.0;
     new_h[jammed_at] = jammed ? 1.0 : 0.0;
     return true;
+  }
+
+  void
+  RveMaterial::add_jamming_ramp(const fem::MaterialIncrement &increment,
+                                const double                  rho_old,
+                                const std::size_t             pooled,
+                                fem::MaterialResponse        &response) const
+  {
+    // v = ln(V / V_0) of the increment, a = ln(rho_old / rho_jam) < 0: the
+    // trial passes the jamming density when v < a, by the fraction
+    // s = 1 - a / v of the increment, which strains the jammed packing.
+    const dealii::SymmetricTensor<2, 3> &deps = increment.strain_increment;
+    const dealii::SymmetricTensor<2, 3>  stretch
+      = dealii::unit_symmetric_tensor<3>() + deps;
+    const double v = std::log(dealii::determinant(stretch));
+    const double a = std::log(rho_old / template_jamming_density[pooled]);
+    if (!(v < a))
+      return;
+    const double                         s       = 1.0 - a / v;
+    const dealii::SymmetricTensor<4, 3> &Ct      = template_tangent[pooled];
+    const dealii::SymmetricTensor<2, 3>  Ct_deps = Ct * deps;
+    response.stress += s * Ct_deps;
+    // d s / d deps = (a / v^2) d v / d deps, d v / d deps = (I + deps)^-1.
+    response.tangent
+      += s * Ct
+         + (a / (v * v))
+             * dealii::outer_product(Ct_deps, dealii::invert(stretch));
   }
 
   dealii::SymmetricTensor<2, 3>

@@ -206,6 +206,23 @@ namespace compax::coupling
     }
 
   private:
+    /**
+     * A loose point whose trial passes its packing's jamming density
+     * within the step: the part of the increment beyond it strains the
+     * jammed packing linearly (its condensed tangent), added to @p
+     * response with its exact derivative. Without it a loose cell in
+     * series with a jammed one (stacked cells, or a cell next to one that
+     * just switched) would carry the jammed cell's stress on the floor
+     * alone, collapsing by far more than its jamming strain within the
+     * Newton iterations; the switch to the RVE itself stays at the start of
+     * the next step.
+     */
+    void
+    add_jamming_ramp(const fem::MaterialIncrement &increment,
+                     double                        rho_old,
+                     std::size_t                   pooled,
+                     fem::MaterialResponse        &response) const;
+
     /// Index of the pool packing `point` starts from.
     std::size_t
     pool_member(std::size_t point) const;
@@ -244,16 +261,18 @@ namespace compax::coupling
     mutable std::vector<dem::PeriodicBed> templates;
     mutable std::vector<double>           template_jamming_density;
     /// Axial entry of each packing's condensed tangent [Pa].
-    mutable std::vector<double>           template_modulus;
-    mutable double                        template_density = -1.0;
-    mutable std::vector<dem::PeriodicBed> committed;
-    mutable std::vector<dem::PeriodicBed> trial;
-    mutable std::vector<double>           committed_steps;
-    mutable dem::PeriodicAssembler        assembler;
-    mutable dem::TrustRegionNewton        newton;
-    mutable dem::FireRelaxation           fire;
-    mutable dem::TangentCalculator        tangent;
-    mutable RveMaterialCounters           counters;
+    mutable std::vector<double> template_modulus;
+    /// Each packing's condensed tangent [Pa].
+    mutable std::vector<dealii::SymmetricTensor<4, 3>> template_tangent;
+    mutable double                                     template_density = -1.0;
+    mutable std::vector<dem::PeriodicBed>              committed;
+    mutable std::vector<dem::PeriodicBed>              trial;
+    mutable std::vector<double>                        committed_steps;
+    mutable dem::PeriodicAssembler                     assembler;
+    mutable dem::TrustRegionNewton                     newton;
+    mutable dem::FireRelaxation                        fire;
+    mutable dem::TangentCalculator                     tangent;
+    mutable RveMaterialCounters                        counters;
   };
 
   /// The 4th-order tensor of a Voigt matrix with engineering shears

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 using namespace compax;
@@ -75,43 +76,90 @@ TEST(RveMaterial, CommitsOnlyCommittedIncrements)
 /// the committed cell). The condensed tangent is taken with respect to a
 /// strain of the trial configuration, so it differs from d sigma / d deps
 /// by O(|deps|) = 2e-4, well below the 1e-3 asserted.
+namespace
+{
+  /// The largest difference between the tangent of @p m at @p inc from
+  /// state @p h and central differences of its stress, and the largest
+  /// tangent entry.
+  std::pair<double, double>
+  tangent_error(const coupling::RveMaterial  &m,
+                const std::vector<double>    &h,
+                const fem::MaterialIncrement &inc,
+                const double                  step)
+  {
+    std::vector<double>   out(h.size());
+    fem::MaterialResponse r;
+    EXPECT_TRUE(m.evaluate(inc, h, out, r));
+    const dealii::SymmetricTensor<4, 3> C     = r.tangent;
+    double                              worst = 0.0, scale = 0.0;
+    for (unsigned int k = 0; k < 3; ++k)
+      for (unsigned int l = k; l < 3; ++l)
+        {
+          fem::MaterialResponse  rp, rm;
+          fem::MaterialIncrement ip = inc, im = inc;
+          ip.strain_increment[k][l] += step;
+          im.strain_increment[k][l] -= step;
+          EXPECT_TRUE(m.evaluate(ip, h, out, rp));
+          EXPECT_TRUE(m.evaluate(im, h, out, rm));
+          // A symmetric perturbation of the (k, l) component changes both
+          // eps_kl and eps_lk when k != l: d sigma = 2 C_ijkl step.
+          const double factor = k == l ? 1.0 : 2.0;
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = i; j < 3; ++j)
+              {
+                const double fd
+                  = (rp.stress[i][j] - rm.stress[i][j]) / (2.0 * step);
+                worst = std::max(worst, std::abs(fd - factor * C[i][j][k][l]));
+                scale = std::max(scale, std::abs(C[i][j][k][l]));
+              }
+        }
+    return {worst, scale};
+  }
+} // namespace
+
+/// A loose point whose trial passes its packing's jamming density within
+/// the step stiffens at once by the packing's tangent on the part of the
+/// increment beyond it: none short of the jamming density (floor only),
+/// compression beyond it, and a tangent that is the derivative of that
+/// stress (central differences).
+TEST(RveMaterial, LoosePointPastItsJammingDensityStiffensWithExactTangent)
+{
+  coupling::RveMaterial m(small_drawn_spec(), material1());
+  std::vector<double>   h(m.n_history());
+  m.initialize(0.60, h);
+  const double jam = m.jamming_density(0);
+  ASSERT_GT(jam, 0.61);
+  // One committed loose step to 0.5 % below the jamming density.
+  compact(m, h, 1, 0.60 / (0.995 * jam) - 1.0);
+  ASSERT_FALSE(coupling::RveMaterial::is_jammed(h));
+  ASSERT_NEAR(m.relative_density(h), 0.995 * jam, 1e-12);
+
+  std::vector<double>   out(h.size());
+  fem::MaterialResponse short_of_jamming, past_jamming;
+  ASSERT_TRUE(m.evaluate(uniaxial(-0.004), h, out, short_of_jamming));
+  ASSERT_TRUE(m.evaluate(uniaxial(-0.010), h, out, past_jamming));
+  // Short of it: the floor alone, E (1 - nu) / ((1 + nu)(1 - 2 nu)) eps.
+  const double Ef = small_drawn_spec().tangent_floor_modulus;
+  EXPECT_NEAR(short_of_jamming.stress[2][2] - m.stress(h)[2][2],
+              -0.004 * Ef * 0.75 / (1.25 * 0.5),
+              1e-9 * Ef);
+  // Past it: the packing's stiffness on the strain beyond the jamming
+  // density, far above the floor's.
+  EXPECT_LT(past_jamming.stress[2][2] - m.stress(h)[2][2],
+            -0.010 * Ef * 0.75 / (1.25 * 0.5) * 10.0);
+  const auto [worst, scale] = tangent_error(m, h, uniaxial(-0.010), 1e-7);
+  EXPECT_LT(worst, 1e-5 * scale);
+}
+
 TEST(RveMaterial, TangentIsDerivativeOfStressInTheIncrement)
 {
   coupling::RveMaterial m(small_drawn_spec(), material1());
   std::vector<double>   h(m.n_history());
   m.initialize(0.60, h);
   compact(m, h, 20, -0.01);
-
-  const double           deps = -2e-4, step = 1e-7;
-  std::vector<double>    out(h.size());
-  fem::MaterialResponse  r;
-  fem::MaterialIncrement inc = uniaxial(deps);
-  ASSERT_TRUE(m.evaluate(inc, h, out, r));
+  ASSERT_TRUE(coupling::RveMaterial::is_jammed(h));
   // The tangent of RVE and elastic floor together (the floor's stress is
   // integrated with the increment, so its derivative is the floor).
-  const dealii::SymmetricTensor<4, 3> C = r.tangent;
-
-  double worst = 0.0, scale = 0.0;
-  for (unsigned int k = 0; k < 3; ++k)
-    for (unsigned int l = k; l < 3; ++l)
-      {
-        fem::MaterialResponse  rp, rm;
-        fem::MaterialIncrement ip = inc, im = inc;
-        ip.strain_increment[k][l] += step;
-        im.strain_increment[k][l] -= step;
-        ASSERT_TRUE(m.evaluate(ip, h, out, rp));
-        ASSERT_TRUE(m.evaluate(im, h, out, rm));
-        // A symmetric perturbation of the (k, l) component changes both
-        // eps_kl and eps_lk when k != l: d sigma = 2 C_ijkl step.
-        const double factor = k == l ? 1.0 : 2.0;
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = i; j < 3; ++j)
-            {
-              const double fd
-                = (rp.stress[i][j] - rm.stress[i][j]) / (2.0 * step);
-              worst = std::max(worst, std::abs(fd - factor * C[i][j][k][l]));
-              scale = std::max(scale, std::abs(C[i][j][k][l]));
-            }
-      }
+  const auto [worst, scale] = tangent_error(m, h, uniaxial(-2e-4), 1e-7);
   EXPECT_LT(worst, 1e-3 * scale);
 }
