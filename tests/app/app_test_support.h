@@ -148,6 +148,22 @@ namespace compax::testing
     }
   };
 
+  /// A resumed run repeats the uninterrupted one: equal rows (bitwise, the
+  /// same binary takes the same path) of @p columns from row @p first on.
+  inline void
+  expect_equal_rows(const Csv                      &full,
+                    const Csv                      &resumed,
+                    const std::vector<std::string> &columns,
+                    const std::size_t               first)
+  {
+    ASSERT_EQ(full.rows(), resumed.rows());
+    for (const std::string &column : columns)
+      for (std::size_t k = first; k < full.rows(); ++k)
+        EXPECT_DOUBLE_EQ(full.column.at(column)[k],
+                         resumed.column.at(column)[k])
+          << column << " row " << k;
+  }
+
   /// Last value of `column` in the rows of the given `stage` (0 if the
   /// stage has no row).
   inline double

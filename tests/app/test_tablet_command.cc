@@ -160,14 +160,13 @@ TEST_F(TabletApp, StoppedRunResumesToTheUninterruptedResult)
   // reproduces the uninterrupted one.
   const Csv full(folder / "full" / "tablet.csv");
   const Csv again(folder / "resumed" / "tablet.csv");
-  ASSERT_EQ(full.rows(), again.rows());
-  for (const std::string column : {"upper_punch_pressure",
-                                   "die_wall_pressure",
-                                   "ejection_force",
-                                   "mean_relative_density"})
-    for (std::size_t k = 0; k < full.rows(); ++k)
-      EXPECT_DOUBLE_EQ(full.column.at(column)[k], again.column.at(column)[k])
-        << column << " row " << k;
+  expect_equal_rows(full,
+                    again,
+                    {"upper_punch_pressure",
+                     "die_wall_pressure",
+                     "ejection_force",
+                     "mean_relative_density"},
+                    0);
 
   // A checkpoint of another punch cycle is refused as bad input.
   write("other.prm",

@@ -8,6 +8,8 @@
 // compares a run with itself.
 #include "coupling/rve_material.h"
 #include "fe2_test_support.h"
+
+#include "../../support/equal_tablet_cycles.h"
 #include "fem/tablet_process.h"
 
 #include <deal.II/base/mpi.h>
@@ -67,21 +69,5 @@ TEST(RveMaterialMpi, DistributedFe2RunGivesSerialForces)
 {
   const auto distributed = fe2_cycle(MPI_COMM_WORLD);
   const auto serial      = fe2_cycle(MPI_COMM_SELF);
-  ASSERT_EQ(distributed.size(), serial.size());
-  double scale = 0.0;
-  for (const auto &st : serial)
-    scale = std::max(scale, st.forces.upper_punch_force);
-  ASSERT_GT(scale, 0.0);
-  for (std::size_t k = 0; k < serial.size(); ++k)
-    {
-      const auto &a = distributed[k].forces, &b = serial[k].forces;
-      // Both converge to the Newton tolerance 1e-8 from different
-      // round-off.
-      EXPECT_NEAR(a.upper_punch_force, b.upper_punch_force, 1e-6 * scale)
-        << "step " << k;
-      EXPECT_NEAR(a.lower_punch_force, b.lower_punch_force, 1e-6 * scale);
-      EXPECT_NEAR(a.die_wall_normal_force,
-                  b.die_wall_normal_force,
-                  1e-6 * scale);
-    }
+  compax::testing::expect_equal_cycles(distributed, serial);
 }
