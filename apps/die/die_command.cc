@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -454,12 +455,17 @@ namespace compax::cli
         const double seconds = std::chrono::duration<double>(
                                  std::chrono::steady_clock::now() - started)
                                  .count();
-        std::cout << "Solver: " << die.newton_iterations
+        std::cout << std::defaultfloat << std::setprecision(4)
+                  << "Solver: " << die.newton_iterations
                   << " Newton iterations (" << die.cg_iterations << " CG), "
-                  << die.assemblies << " assemblies (" << die.assembly_seconds
-                  << " s), linear solves " << die.linear_seconds
-                  << " s, relaxation " << die.fire_seconds << " s; total "
-                  << seconds << " s\n";
+                  << die.fire_iterations << " FIRE fallback iterations, ";
+        // The elastic (Hertz or nonlocal) stepper does not time its
+        // assemblies, linear solves and relaxations: print no zeros.
+        if (die.assemblies > 0)
+          std::cout << die.assemblies << " assemblies (" << die.assembly_seconds
+                    << " s), linear solves " << die.linear_seconds
+                    << " s, relaxation " << die.fire_seconds << " s, ";
+        std::cout << "total " << seconds << " s\n";
         return code;
       }
     };

@@ -127,6 +127,14 @@ namespace compax::dem
   void
   DieCompaction::check(const LoadStepResult &r, const std::string &what)
   {
+    assembly_seconds += r.assembly_seconds;
+    linear_seconds += r.linear_seconds;
+    assemblies += r.assemblies;
+    newton_iterations += r.iterations;
+    cg_iterations += r.cg_iterations;
+    fire_iterations += r.fire_iterations;
+    fire_seconds += r.fire_seconds;
+
     if (!r.converged)
       {
         std::ostringstream s;
@@ -147,14 +155,6 @@ namespace compax::dem
                         const int             step,
                         const LoadStepResult &r)
   {
-    assembly_seconds += r.assembly_seconds;
-    linear_seconds += r.linear_seconds;
-    assemblies += r.assemblies;
-    newton_iterations += r.iterations;
-    cg_iterations += r.cg_iterations;
-    fire_iterations += r.fire_iterations;
-    fire_seconds += r.fire_seconds;
-
     DieRecord d;
     d.stage                = stage;
     d.branch               = branch;

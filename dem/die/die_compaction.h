@@ -335,6 +335,8 @@ namespace compax::dem
     void
     emit(const DieRecord &r, const Bed &state);
 
+    /// Adds the solver work of r to the totals (a failed step's cut-backs
+    /// included), then throws when r did not converge.
     void
     check(const LoadStepResult &r, const std::string &what);
 
