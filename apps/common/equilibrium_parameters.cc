@@ -5,7 +5,8 @@
 namespace compax::cli
 {
   void
-  declare_equilibrium_tolerances(dealii::ParameterHandler &prm)
+  declare_equilibrium_tolerances(dealii::ParameterHandler &prm,
+                                 const std::string        &force_floor_note)
   {
     declare_quantity(prm,
                      "Force tolerance",
@@ -13,7 +14,9 @@ namespace compax::cli
                      open(0.0, 1.0),
                      "-",
                      "Converged when the largest net force on a particle is "
-                     "below this times the mean contact force.");
+                     "below this times the mean contact force."
+                       + (force_floor_note.empty() ? std::string()
+                                                   : " " + force_floor_note));
     declare_quantity(prm,
                      "Step tolerance",
                      "1e-4",

@@ -246,7 +246,13 @@ namespace compax::cli
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
-    declare_equilibrium_tolerances(prm);
+    declare_equilibrium_tolerances(
+      prm,
+      "With the bonded law, net forces below this times the jamming "
+      "pressure at which consolidation hands over to Newton (0.5 MPa) on a "
+      "mean particle's cross-section pi R^2 count as converged too: a "
+      "compact unloading towards a stress-free state has a vanishing mean "
+      "contact force.");
     prm.leave_subsection();
 
     declare_contact_choice(

@@ -85,6 +85,13 @@ namespace compax::dem
       , protocol(std::move(protocol_))
       , equilibrium(equilibrium)
   {
+    // Net forces below the tolerance times a particle's share of the
+    // jamming pressure are below what the study resolves anywhere else.
+    if (this->equilibrium.force_floor == 0.0)
+      this->equilibrium.force_floor
+        = this->equilibrium.force_tolerance
+          * protocol.consolidation.jamming_pressure * pi
+          * std::pow(path.particles.mean_radius(), 2);
     reset_stepper();
     auto &t = protocol.compaction_targets;
     t.insert(t.end(),

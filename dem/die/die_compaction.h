@@ -153,6 +153,8 @@ namespace compax::dem
   class DieCompaction
   {
   public:
+    /// equilibrium.force_floor = 0 is replaced by force_tolerance times the
+    /// force of the jamming pressure on a mean particle's cross-section.
     DieCompaction(Bed                 bed,
                   const ContactModel &model,
                   DieProtocol         protocol,

@@ -124,7 +124,8 @@ namespace compax::dem
             radius                   = opts.initial_radius * length;
             stepped                  = false;
           }
-        const bool force_ok = result.relative_residual <= opts.force_tolerance;
+        const bool force_ok = result.relative_residual <= opts.force_tolerance
+                              || max_particle_norm(F) <= opts.force_floor;
         const bool step_ok
           = !stepped || last_step <= opts.step_tolerance * R_mean;
         if (force_ok && step_ok)

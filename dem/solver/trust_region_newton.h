@@ -19,6 +19,11 @@ namespace compax::dem
     /// Converged when every particle's net force is below this fraction of
     /// the mean contact force [-].
     double force_tolerance = 1e-6;
+    /// ... or below this absolute force [N]. A bed that unloads towards a
+    /// stress-free state (a thin compact whose punch comes free) has a
+    /// vanishing mean contact force, and the relative criterion alone then
+    /// asks for round-off; 0: none.
+    double force_floor = 0.0;
     /// ... and the last step moved no particle farther than this fraction of
     /// the mean radius [-].
     double step_tolerance = 1e-4;

@@ -85,6 +85,39 @@ TEST_F(DieCommand, SmallBedCompactsUnloadsAndEjects)
             "sigma_res_0 rho_c_e A_b0 rho_c_b E_0 n rho_c_E nu_tablet ");
 }
 
+TEST_F(DieCommand, ThinCompactUnloadsUntilThePunchComesFree)
+{
+  // 100 particles in a 4 mm die make a compact about one particle thick,
+  // which unloads towards a stress-free state: the mean contact force
+  // vanishes and a purely relative force criterion asks for round-off (the
+  // run used to stop with exit 3 at the last unloading step).
+  write("thin.prm",
+        "subsection Packing\n set Number of particles = 100\n"
+        " set Die diameter = 4e-3\nend\n"
+        "subsection Protocol\n set Final relative density = 0.7\n"
+        " set Unloading points = 0.7\n set Eject = false\nend\n");
+  const auto r = compax("die thin.prm -o out");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+
+  const Csv   die(folder / "out" / "die.csv");
+  const auto &stage = die.text.at("stage");
+  const auto &upper = die.column.at("upper_punch_force");
+  const auto &lower = die.column.at("lower_punch_force");
+  double      peak  = 0;
+  for (double f : upper)
+    peak = std::max(peak, f);
+  ASSERT_GT(peak, 0.0);
+  for (std::size_t i = 0; i < die.rows(); ++i)
+    EXPECT_NEAR(upper[i], lower[i], 1e-4 * peak) << "row " << i;
+  ASSERT_EQ(stage.back(), "unloading");
+  EXPECT_LE(upper.back(), 0.0);
+
+  const Csv branches(folder / "out" / "branches.csv");
+  ASSERT_EQ(branches.rows(), 1u);
+  EXPECT_LT(branches.column.at("rho_min_in_die")[0],
+            branches.column.at("rho_max_in_die")[0]);
+}
+
 TEST_F(DieCommand, UnloadingPointAboveFinalDensityIsRejected)
 {
   write("bad.prm",
