@@ -164,6 +164,22 @@ namespace compax::testing
           << column << " row " << k;
   }
 
+  /// A frictionless die carries no axial load: at equilibrium the punches
+  /// of every die.csv row carry the same force, to @p relative times the
+  /// largest upper-punch force, which must be positive.
+  inline void
+  expect_balanced_punches(const Csv &die, const double relative = 1e-4)
+  {
+    const auto &upper = die.column.at("upper_punch_force");
+    const auto &lower = die.column.at("lower_punch_force");
+    double      peak  = 0;
+    for (double f : upper)
+      peak = std::max(peak, f);
+    ASSERT_GT(peak, 0.0);
+    for (std::size_t i = 0; i < die.rows(); ++i)
+      EXPECT_NEAR(upper[i], lower[i], relative * peak) << "row " << i;
+  }
+
   /// Last value of `column` in the rows of the given `stage` (0 if the
   /// stage has no row).
   inline double

@@ -12,6 +12,7 @@
 using compax::testing::AppTest;
 using compax::testing::contact_subsection;
 using compax::testing::Csv;
+using compax::testing::expect_balanced_punches;
 using compax::testing::last_in_stage;
 
 namespace
@@ -48,17 +49,11 @@ TEST_F(DieNonlocal, TinyBedCompactsWithBalancedPunchForces)
   const auto r = compax("die nonlocal.prm -o nl");
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
   EXPECT_NE(r.out.find("nonlocal contact formulation"), std::string::npos);
-  const Csv   die(folder / "nl" / "die.csv");
-  const auto &upper = die.column.at("upper_punch_force");
-  const auto &lower = die.column.at("lower_punch_force");
-  double      peak  = 0;
-  for (double f : upper)
-    peak = std::max(peak, f);
-  ASSERT_GT(peak, 0.0);
+  const Csv die(folder / "nl" / "die.csv");
+  expect_balanced_punches(die);
   bool unloading = false;
   for (std::size_t i = 0; i < die.rows(); ++i)
     {
-      EXPECT_NEAR(upper[i], lower[i], 1e-4 * peak) << "row " << i;
       EXPECT_EQ(die.column.at("bonds")[i], 0.0);
       unloading |= die.text.at("stage")[i] == "unloading";
     }
