@@ -446,8 +446,10 @@ namespace compax::cli
         csv.close();
 
         write_branches(folder / "branches.csv", die.branches());
-        const CompactionFits fits
-          = write_die_fits(folder, die.records(), die.branches());
+        const CompactionFits fits = write_die_fits(folder,
+                                                   die.records(),
+                                                   die.branches(),
+                                                   die.pressure_resolution());
         plot(folder, fits);
         if (!die.branches().empty())
           plot_branches(folder, fits);

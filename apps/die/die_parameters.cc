@@ -238,6 +238,26 @@ namespace compax::cli
                       "from the checkpoint's run folder). Final relative "
                       "density may be raised; the targets done must be "
                       "unchanged. Empty: start afresh.");
+    prm.declare_entry(
+      "Consolidation",
+      "none",
+      dealii::Patterns::Selection("none|frozen-history"),
+      "How the loose deposit reaches jamming. none (the bonded path): every "
+      "compaction step from the deposit on ends in a converged state to "
+      "which the history update of Eq. 13 applies (Gonzalez 2018, "
+      "Algorithm 1), so bridges form from the first resolved contact force "
+      "on. While the punches carry less than 0.5 MPa a step is relaxed by "
+      "FIRE at fixed internal variables to 1e-2 of the mean contact force "
+      "(Newton has no stiffness along the mechanisms of an unjammed bed); "
+      "above, the trust-region Newton solves to the Solver tolerances. "
+      "Contact forces below 1e-2 x 0.5 MPa on a mean cross-section pi R^2 "
+      "(7.6e-4 N for R = 220 um) are not resolved: they grow no plastic "
+      "radius, and the coordination number counts the contacts above. "
+      "frozen-history: the former shortcut, for comparison: the bed is "
+      "relaxed at fixed (virgin) internal variables, without plastic "
+      "deformation or bridges, until the punch carries 0.5 MPa; Eq. 13 "
+      "applies only from there on, and compaction targets below that "
+      "density are skipped.");
     prm.declare_entry("Maximum ejection steps",
                       "40",
                       dealii::Patterns::Integer(1, 100000),
@@ -387,6 +407,7 @@ namespace compax::cli
       reject_entry("Protocol/Rerun branch from",
                    rerun,
                    "no such checkpoint file");
+    protocol.consolidate         = prm.get("Consolidation") == "frozen-history";
     protocol.checkpoint_interval = prm.get_integer("Checkpoint interval");
     protocol.stop_after      = prm.get_integer("Stop after compaction steps");
     const std::string resume = prm.get("Resume from");

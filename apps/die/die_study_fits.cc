@@ -54,13 +54,15 @@ namespace compax::cli
   CompactionFits
   write_die_fits(const std::filesystem::path           &folder,
                  const std::vector<dem::DieRecord>     &records,
-                 const std::vector<dem::BranchSummary> &branches)
+                 const std::vector<dem::BranchSummary> &branches,
+                 const double                           pressure_resolution)
   {
-    // The jammed part of the compaction path.
+    // The jammed part of the compaction path: the upper punch carries a
+    // resolved pressure (step 0: the loose deposit).
     std::vector<double> rho, Z, pressure;
     for (const auto &r : records)
       if (r.stage == "compaction" && r.step > 0 && r.coordination_number > 0
-          && r.upper_punch_pressure > 0) // step 0: the loose deposit
+          && r.upper_punch_pressure > pressure_resolution)
         {
           rho.push_back(r.relative_density);
           Z.push_back(r.coordination_number);

@@ -42,8 +42,12 @@ namespace compax::cli
     std::optional<dem::PhaniNiyogiFit> youngs_modulus;
   };
 
+  /// Fits Eqs. (14)-(24) to the jammed compaction steps (upper punch
+  /// pressure above @p pressure_resolution [Pa]) and the branches, writes
+  /// fits.csv and fits.md.
   CompactionFits
   write_die_fits(const std::filesystem::path           &folder,
                  const std::vector<dem::DieRecord>     &records,
-                 const std::vector<dem::BranchSummary> &branches);
+                 const std::vector<dem::BranchSummary> &branches,
+                 double                                 pressure_resolution);
 } // namespace compax::cli

@@ -148,7 +148,18 @@ namespace compax::dem
               best     = p;
             }
         }
-    const double rms = levenberg_marquardt(model, best, rho, Z);
+    // Levenberg-Marquardt from the best grid point; a result that leaves
+    // the grid's range of exponents (theta -> 0 with Z_c -> -infinity
+    // mimics a logarithm) or of critical densities is not a power law of
+    // the form of Eq. (14): the grid point stands.
+    Eigen::VectorXd refined = best;
+    double          rms     = levenberg_marquardt(model, refined, rho, Z);
+    const double    theta   = std::exp(refined[3]);
+    if (theta >= 0.1 && theta <= 2.0 && std::exp(refined[2]) < 0.3
+        && rms <= best_rms)
+      best = refined;
+    else
+      rms = best_rms;
     return {
       best[0], best[1], rho_min - std::exp(best[2]), std::exp(best[3]), rms};
   }

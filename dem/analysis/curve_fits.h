@@ -38,7 +38,9 @@ namespace compax::dem
     double E_0, n, rho_c, rms;
   };
 
-  /// Fits Eq. (14); needs at least 5 points with rho above jamming.
+  /// Fits Eq. (14); needs at least 5 points with rho above jamming. The
+  /// exponent is sought in [0.1, 2] and rho_c within 0.3 below the
+  /// smallest rho (outside, the least-squares optimum is no power law).
   CoordinationFit
   fit_coordination(const std::vector<double> &rho,
                    const std::vector<double> &Z);

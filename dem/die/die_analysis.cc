@@ -7,7 +7,7 @@
 namespace compax::dem
 {
   BedMeasures
-  measure(const Bed &bed)
+  measure(const Bed &bed, const double resolution)
   {
     BedMeasures m;
     std::size_t loaded = 0;
@@ -18,7 +18,7 @@ namespace compax::dem
         const double P
           = c.law.response(pair_overlap(p, c), c.history.a_p, c.history.a_B)
               .force;
-        if (P != 0.0)
+        if (std::abs(P) > resolution)
           ++loaded;
         m.n_tensile += P < 0.0;
         m.n_compressive += P > 0.0;

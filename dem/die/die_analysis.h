@@ -23,7 +23,7 @@ namespace compax::dem
   };
 
   BedMeasures
-  measure(const Bed &bed);
+  measure(const Bed &bed, double resolution = 0.0);
 
   /// Normal forces P of all particle pairs carrying a force [N] (histograms).
   std::vector<double>

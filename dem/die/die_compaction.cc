@@ -108,13 +108,38 @@ namespace compax::dem
               protocol.unloading_points.end());
   }
 
+  double
+  DieCompaction::force_resolution() const
+  {
+    return pressure_resolution() * pi
+           * std::pow(path.particles.mean_radius(), 2);
+  }
+
+  double
+  DieCompaction::pressure_resolution() const
+  {
+    const ConsolidationOptions &c = protocol.consolidation;
+    return c.force_floor_fraction * c.jamming_pressure;
+  }
+
   void
   DieCompaction::reset_stepper()
   {
     if (protocol.elastic)
-      elastic = std::make_unique<ElasticDieStepper>(*protocol.elastic);
-    else
-      stepper = std::make_unique<LoadStepper>(model, equilibrium);
+      {
+        elastic = std::make_unique<ElasticDieStepper>(*protocol.elastic);
+        return;
+      }
+    LoadSteppingOptions stepping;
+    if (!protocol.consolidate)
+      {
+        const ConsolidationOptions &c = protocol.consolidation;
+        stepping.jamming_pressure     = c.jamming_pressure;
+        stepping.unjammed_tolerance   = c.relative_tolerance;
+        stepping.unjammed_iterations  = c.max_relaxation_iterations;
+        stepping.force_resolution     = force_resolution();
+      }
+    stepper = std::make_unique<LoadStepper>(model, equilibrium, stepping);
   }
 
   LoadStepResult
@@ -184,7 +209,7 @@ namespace compax::dem
       }
     else
       {
-        const BedMeasures m   = measure(bed);
+        const BedMeasures m   = measure(bed, force_resolution());
         d.coordination_number = m.coordination_number;
         d.bonding_surface     = m.bonding_surface;
         d.bonds               = m.n_bonds;

@@ -40,13 +40,28 @@ namespace compax::dem
     int max_ejection_steps = 40;
     /// Whether to eject after each unloading branch.
     bool eject = true;
-    /// Consolidate the loose deposit up to jamming before the static load
-    /// steps (see Consolidation): the punch advances while the bed relaxes
-    /// at fixed internal variables until the relaxed bed carries
-    /// consolidation.jamming_pressure. Compaction targets and unloading
-    /// points below the density so reached are skipped (no rows: the bed
-    /// carries no force there).
-    bool                 consolidate = true;
+    /**
+     * How the loose deposit reaches jamming.
+     * - false (the bonded path, default): every compaction target is a
+     *   load step from the deposit on, and Eq. (13) is applied at every
+     *   converged state (Gonzalez 2018, Algorithm 1): bridges form from
+     *   the first resolved contact force on. Below
+     *   consolidation.jamming_pressure on the punches a step is relaxed
+     *   by FIRE at fixed internal variables to
+     *   consolidation.relative_tolerance (Newton has no stiffness along
+     *   the mechanisms of an unjammed bed), and that relaxed state is the
+     *   converged state the history update applies to; above it the
+     *   trust-region Newton solves to EquilibriumOptions' tolerances.
+     *   Contact forces below force_resolution() grow no plastic radius.
+     * - true (frozen-history consolidation, the former default, kept for
+     *   comparison): the punch advances in adaptive increments while the
+     *   bed relaxes at fixed (virgin) internal variables, without plastic
+     *   deformation or bridges, until the relaxed bed carries
+     *   consolidation.jamming_pressure; only then do the load steps and
+     *   Eq. (13) start. Compaction targets and unloading points below the
+     *   density so reached are skipped.
+     */
+    bool                 consolidate = false;
     ConsolidationOptions consolidation;
     /// Elastic frictionless spheres instead of the ContactModel's bonded
     /// elasto-plastic law: Hertz, or the nonlocal contact formulation of
@@ -259,6 +274,20 @@ namespace compax::dem
     {
       return last_good;
     }
+
+    /// Pressures below this are not resolved [Pa]: the punch pressure of
+    /// the jammed states the fits of Eqs. (14)-(15) use exceeds it
+    /// (consolidation.force_floor_fraction x jamming_pressure, 5 kPa by
+    /// default).
+    double
+    pressure_resolution() const;
+
+    /// Contact forces below this are not resolved [N]: the pressure
+    /// resolution on a mean cross-section pi R^2. The coordination number
+    /// counts the contacts above it, and Eq. (13) grows no plastic radius
+    /// below it (bonded path).
+    double
+    force_resolution() const;
 
     /// In-die relative density at which consolidation found the bed jammed
     /// (0 without consolidation) [-].

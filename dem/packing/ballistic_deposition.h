@@ -8,13 +8,25 @@
 
 namespace compax::dem
 {
-  /// Parameters of a ballistic deposition into a die.
+  /// The lateral boundary the spheres fall between.
+  enum class DepositionContainer
+  {
+    /// A rigid cylindrical die of diameter die_diameter, axis z through the
+    /// origin.
+    cylinder,
+    /// A square column [-L/2, L/2)^2 of side L = die_diameter, periodic in
+    /// x and y (no lateral wall: the lateral faces of a periodic cell).
+    periodic_square
+  };
+
+  /// Parameters of a ballistic deposition into a die (floor at z = 0).
   struct DepositionParameters
   {
     std::size_t n_particles = 500;
-    /// Die diameter D [m] (axis z through the origin, floor at z = 0).
-    double           die_diameter = 4e-3;
-    SizeDistribution sizes;
+    /// Die diameter D, or side L of a periodic column [m].
+    double              die_diameter = 4e-3;
+    DepositionContainer container    = DepositionContainer::cylinder;
+    SizeDistribution    sizes;
     /// Probability of each material (normalized); empty = all material 0.
     std::vector<double> material_fractions;
     std::uint64_t       seed = 1;
@@ -26,7 +38,8 @@ namespace compax::dem
    * the die, fall until they touch the floor or a sphere already placed,
    * then roll down over their supports until they rest stably (a local
    * minimum of height on the floor, in a pocket of three supports, or
-   * against the die wall). The rolling is a projected descent: move down
+   * against the die wall; a periodic column wraps around in x and y
+   * instead). The rolling is a projected descent: move down
    * by h, project out of every overlap (with spheres, floor and die wall),
    * accept if the sphere went down, halve h otherwise, until h < 1e-6 R.
    * Deterministic for a given seed (see RandomSource).

@@ -122,14 +122,15 @@ namespace compax::dem
 
   BondChanges
   PeriodicContactSet::update_histories(const ParticleSystem &particles,
-                                       const PeriodicCell   &cell)
+                                       const PeriodicCell   &cell,
+                                       const double          resolution)
   {
     BondChanges changes;
     for (PeriodicContact &c : pairs)
       {
         const double gamma = particles.radii[c.i] + particles.radii[c.j]
                              - branch_vector(particles, cell, c).norm();
-        update_history(c.law, gamma, c.history, changes);
+        update_history(c.law, gamma, c.history, changes, resolution);
       }
     return changes;
   }

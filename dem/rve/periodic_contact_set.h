@@ -88,9 +88,12 @@ namespace compax::dem
     }
 
     /// Applies Eq. (13) to every contact at the current (converged)
-    /// positions; the only place where histories change.
+    /// positions, with forces resolved to `resolution` [N] (see
+    /// update_history()); the only place where histories change.
     BondChanges
-    update_histories(const ParticleSystem &particles, const PeriodicCell &cell);
+    update_histories(const ParticleSystem &particles,
+                     const PeriodicCell   &cell,
+                     double                resolution = 0.0);
 
   private:
     double                       skin_;

@@ -10,8 +10,15 @@ namespace compax::dem
   update_history(const BondedElastoplasticLaw &law,
                  const double                  gamma,
                  ContactHistory               &history,
-                 BondChanges                  &changes)
+                 BondChanges                  &changes,
+                 const double                  resolution)
   {
+    if (resolution > 0.0)
+      {
+        const ContactResponse r = law.response(gamma, history.a_p, history.a_B);
+        if (r.contact_radius > history.a_p && std::abs(r.force) <= resolution)
+          return;
+      }
     const ContactHistory next = law.updated_history(gamma, history);
     if (history.a_B == 0.0 && next.a_B > 0.0)
       ++changes.formed;
@@ -149,17 +156,20 @@ namespace compax::dem
 
   BondChanges
   ContactSet::update_histories(const ParticleSystem &particles,
-                               const DieWalls       &die)
+                               const DieWalls       &die,
+                               const double          resolution)
   {
     BondChanges changes;
     for (PairContact &c : pairs)
-      update_history(c.law, pair_overlap(particles, c), c.history, changes);
+      update_history(
+        c.law, pair_overlap(particles, c), c.history, changes, resolution);
     for (WallContact &c : walls)
       update_history(
         c.law,
         die.gap(c.wall, particles.positions[c.i], particles.radii[c.i]).overlap,
         c.history,
-        changes);
+        changes,
+        resolution);
     return changes;
   }
 } // namespace compax::dem

@@ -88,9 +88,12 @@ namespace compax::dem
     }
 
     /// Applies Eq. (13) to every contact at the current (converged)
-    /// positions; the only place where histories change.
+    /// positions, with forces resolved to `resolution` [N] (see
+    /// update_history()); the only place where histories change.
     BondChanges
-    update_histories(const ParticleSystem &particles, const DieWalls &walls);
+    update_histories(const ParticleSystem &particles,
+                     const DieWalls       &walls,
+                     double                resolution = 0.0);
 
   private:
     double                       skin_;
@@ -111,13 +114,21 @@ namespace compax::dem
     return h.a_p > 0.0 || h.a_B > 0.0;
   }
 
-  /// Applies Eq. (13) to one contact at overlap gamma and counts the bond
-  /// it forms or breaks.
+  /**
+   * Applies Eq. (13) to one contact at overlap gamma and counts the bond
+   * it forms or breaks. A contact whose force |P| is not above
+   * `resolution` [N] (the equilibrium solve's force resolution) keeps its
+   * plastic radius: the solve determines no force there (an unjammed
+   * region's exact equilibrium is force-free), so its left-over overlap
+   * is not plastic deformation (Eq. 13 at the converged state, with the
+   * forces the solve resolves). Breakage (a = 0) always applies.
+   */
   void
   update_history(const BondedElastoplasticLaw &law,
                  double                        gamma,
                  ContactHistory               &history,
-                 BondChanges                  &changes);
+                 BondChanges                  &changes,
+                 double                        resolution = 0.0);
 
   /// A new revision number for a rebuilt contact list, unique across all
   /// lists, so that a restored copy never aliases a newer list.

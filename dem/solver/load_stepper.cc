@@ -1,6 +1,7 @@
 #include "dem/solver/load_stepper.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -56,6 +57,65 @@ namespace compax::dem
     }
   } // namespace
 
+  bool
+  LoadStepper::below_jamming(const Bed &bed, const ContactSums &sums) const
+  {
+    const double F = stepping.jamming_pressure * bed.walls.punch_area();
+    return sums.wall_force[int(Wall::lower_punch)] < F
+           && sums.wall_force[int(Wall::upper_punch)] < F;
+  }
+
+  bool
+  LoadStepper::unjammed(Bed &bed)
+  {
+    if (loose < 0)
+      {
+        ContactAssembler assembler;
+        Eigen::VectorXd  F;
+        loose = below_jamming(bed, assembler.residual(bed, model, F)) ? 1 : 0;
+      }
+    return loose == 1;
+  }
+
+  bool
+  LoadStepper::relax_unjammed(Bed &bed, LoadStepResult &total)
+  {
+    if (!(stepping.jamming_pressure > 0.0) || loose != 1)
+      return false;
+    const auto       t0 = std::chrono::steady_clock::now();
+    const FireResult f  = fire.relax(bed,
+                                    model,
+                                    stepping.unjammed_tolerance,
+                                    stepping.unjammed_iterations,
+                                    stepping.force_resolution);
+    total.fire_seconds
+      += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+           .count();
+    total.fire_iterations += f.iterations;
+    total.assemblies += f.assemblies;
+    if (!f.converged || !below_jamming(bed, f.sums))
+      return false;
+    total.last                   = EquilibriumResult{};
+    total.last.converged         = true;
+    total.last.relative_residual = f.relative_residual;
+    total.last.sums              = f.sums;
+    return true;
+  }
+
+  void
+  LoadStepper::commit(Bed &bed, const ContactSums &sums, LoadStepResult &total)
+  {
+    const BondChanges b
+      = bed.contacts.update_histories(bed.particles,
+                                      bed.walls,
+                                      stepping.resolved_history
+                                        ? stepping.force_resolution
+                                        : 0.0);
+    total.bonds.formed += b.formed;
+    total.bonds.broken += b.broken;
+    loose = below_jamming(bed, sums) ? 1 : 0;
+  }
+
   void
   LoadStepper::predict(Bed &bed, const DieWalls &next)
   {
@@ -91,7 +151,7 @@ namespace compax::dem
     total.substeps  = 1;
     total.converged = r.converged;
     if (r.converged)
-      total.bonds = bed.contacts.update_histories(bed.particles, bed.walls);
+      commit(bed, r.sums, total);
     return total;
   }
 
@@ -100,17 +160,25 @@ namespace compax::dem
   {
     LoadStepResult total;
     const DieWalls start = bed.walls;
-    double         done  = 0.0;
-    fraction = std::min(std::max(fraction, stepping.min_fraction), 1.0);
+    if (stepping.jamming_pressure > 0.0)
+      unjammed(bed); // known before the predictor moves the particles
+    double done = 0.0;
+    fraction    = std::min(std::max(fraction, stepping.min_fraction), 1.0);
     while (done < 1.0)
       {
         const double t      = std::min(1.0, done + fraction);
         saved               = bed;
         const DieWalls next = t >= 1.0 ? target : interpolate(start, target, t);
         predict(bed, next);
-        bed.walls                 = next;
-        const EquilibriumResult r = newton.solve(bed, model);
-        accumulate(total, r);
+        bed.walls = next;
+        EquilibriumResult r;
+        if (relax_unjammed(bed, total))
+          r = total.last;
+        else
+          {
+            r = newton.solve(bed, model);
+            accumulate(total, r);
+          }
         if (r.converged)
           {
             last_increment
@@ -120,10 +188,7 @@ namespace compax::dem
             last_delta[2]    = next.diameter - saved.walls.diameter;
             last_die_present = next.die_present;
             have_increment   = true;
-            const BondChanges b
-              = bed.contacts.update_histories(bed.particles, bed.walls);
-            total.bonds.formed += b.formed;
-            total.bonds.broken += b.broken;
+            commit(bed, r.sums, total);
             ++total.substeps;
             done     = t;
             fraction = std::min(1.0, fraction * stepping.growth);

@@ -14,6 +14,35 @@ namespace compax::dem
     double growth = 1.5;
     /// Extrapolate the last converged sub-step (else affine heights).
     bool secant_predictor = true;
+    /**
+     * Punch pressure below which the bed counts as unjammed [Pa]; 0: none
+     * (every sub-step is solved by the trust-region Newton). While the bed
+     * is unjammed (the punches of its last converged state carried less),
+     * a sub-step is relaxed by FIRE at fixed internal variables to
+     * unjammed_tolerance times the mean contact force, or until every net
+     * force is below force_resolution: below jamming Newton has no
+     * stiffness along the bed's mechanisms, and its steps stay on the
+     * scale of the overlaps while the particles rearrange. The relaxed
+     * state is the sub-step's converged state (Eq. 13 is applied to it)
+     * unless its punches carry the jamming pressure; then Newton continues
+     * from it.
+     */
+    double jamming_pressure = 0.0;
+    /// Relative residual of an unjammed relaxation [-].
+    double unjammed_tolerance = 1e-2;
+    /// FIRE iterations allowed per unjammed relaxation.
+    int unjammed_iterations = 50000;
+    /**
+     * Force resolution of the study [N]: Eq. (13) grows no plastic radius
+     * (and forms no bridge) at a contact whose force is below it (see
+     * update_history()), and an unjammed relaxation whose net forces are
+     * all below it has converged. 0: every force is resolved.
+     */
+    double force_resolution = 0.0;
+    /// false: Eq. (13) grows a_p at every positive overlap of a converged
+    /// state, however small its force (force_resolution then only ends
+    /// unjammed relaxations).
+    bool resolved_history = true;
   };
 
   /// Outcome of one load step (possibly several sub-steps).
@@ -77,16 +106,39 @@ namespace compax::dem
       have_increment = false;
     }
 
+    /// Whether the punches of the last converged state carried less than
+    /// the jamming pressure (a stepper that has not converged a sub-step
+    /// yet asks the bed).
+    bool
+    unjammed(Bed &bed);
+
   private:
+    /// Whether the punches of a bed with these sums carry less than the
+    /// jamming pressure.
+    bool
+    below_jamming(const Bed &bed, const ContactSums &sums) const;
+
+    /// Relaxes an unjammed sub-step (see LoadSteppingOptions); true if the
+    /// relaxed bed is its equilibrium.
+    bool
+    relax_unjammed(Bed &bed, LoadStepResult &total);
+
+    /// Eq. (13) on a converged sub-step; remembers whether it is unjammed.
+    void
+    commit(Bed &bed, const ContactSums &sums, LoadStepResult &total);
+
     /// Moves the particles to the predicted positions for walls `next`.
     void
     predict(Bed &bed, const DieWalls &next);
 
     const ContactModel &model;
     TrustRegionNewton   newton;
+    FireRelaxation      fire;
     LoadSteppingOptions stepping;
     double              fraction = 1.0;
-    Bed                 saved;
+    /// Whether the last converged state was unjammed; -1: not known yet.
+    int loose = -1;
+    Bed saved;
     // Secant predictor: the last converged sub-step's displacements and
     // wall increments (lower punch, upper punch, diameter).
     Eigen::VectorXd last_increment;

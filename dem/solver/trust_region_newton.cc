@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <ostream>
 
@@ -113,8 +114,10 @@ namespace compax::dem
           {
             // Newton crawls: the bed is rearranging. Relax with FIRE.
             const auto       tf = clock_type::now();
-            const FireResult fr
-              = fire.relax(system, opts.fire_tolerance, opts.fire_iterations);
+            const FireResult fr = fire.relax(system,
+                                             opts.fire_tolerance,
+                                             opts.fire_iterations,
+                                             opts.force_floor);
             result.fire_seconds += seconds_since(tf);
             result.fire_iterations += fr.iterations;
             assemble();

@@ -101,3 +101,58 @@ TEST(PackingBallistic, SameSeedSamePacking)
   const ParticleSystem c = ballistic_deposition(prm);
   EXPECT_NE(a.positions, c.positions);
 }
+
+TEST(PackingBallistic, PeriodicColumnWrapsWithoutOverlapOrFloatingSpheres)
+{
+  // A column periodic in x and y: no overlap with any lateral image, every
+  // sphere inside [-L/2, L/2)^2 and resting on the floor or a sphere
+  // (possibly across the periodic faces).
+  DepositionParameters prm;
+  prm.n_particles        = 300;
+  prm.die_diameter       = 2.2e-3; // five diameters
+  prm.container          = DepositionContainer::periodic_square;
+  prm.seed               = 3;
+  const ParticleSystem p = ballistic_deposition(prm);
+  ASSERT_EQ(p.size(), 300u);
+  const double     L = prm.die_diameter, tol = 1e-9;
+  std::vector<int> supports(p.size(), 0);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    {
+      const double R = p.radii[i];
+      EXPECT_GE(p.positions[i][2], R * (1 - tol)) << i;
+      for (int k = 0; k < 2; ++k)
+        {
+          EXPECT_GE(p.positions[i][k], -0.5 * L * (1 + tol)) << i;
+          EXPECT_LT(p.positions[i][k], 0.5 * L * (1 + tol)) << i;
+        }
+      if (p.positions[i][2] <= R * (1 + 1e-6))
+        ++supports[i];
+      for (std::size_t j = 0; j < i; ++j)
+        {
+          Eigen::Vector3d d = p.positions[i] - p.positions[j];
+          for (int k = 0; k < 2; ++k)
+            d[k] -= L * std::round(d[k] / L);
+          const double s = R + p.radii[j];
+          EXPECT_GE(d.norm(), s * (1 - tol)) << i << " " << j;
+          if (d.norm() <= s * (1 + 1e-6) && d[2] > 0.0)
+            ++supports[i];
+        }
+    }
+  int wrapped_supports = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    EXPECT_GE(supports[i], 1) << "particle " << i << " floats";
+  // Some spheres rest on a neighbour across a periodic face (otherwise
+  // the wrap-around would not be exercised).
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      {
+        const Eigen::Vector3d d = p.positions[i] - p.positions[j];
+        const double          s = p.radii[i] + p.radii[j];
+        Eigen::Vector3d       w = d;
+        for (int k = 0; k < 2; ++k)
+          w[k] -= L * std::round(w[k] / L);
+        if (w.norm() <= s * (1 + 1e-6) && d.norm() > 2 * s)
+          ++wrapped_supports;
+      }
+  EXPECT_GT(wrapped_supports, 0);
+}
