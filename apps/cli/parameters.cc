@@ -1,10 +1,16 @@
 #include "apps/cli/parameters.h"
 
 #include "apps/cli/input_error.h"
+#include "coupling/hdf5_archive.h"
 
 #include <deal.II/base/exceptions.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -153,9 +159,19 @@ namespace compax::cli
   parse_parameter_file(dealii::ParameterHandler    &prm,
                        const std::filesystem::path &file)
   {
-    if (!std::filesystem::is_regular_file(file))
+    std::error_code error;
+    const auto      status = std::filesystem::status(file, error);
+    if (!std::filesystem::exists(status))
+      throw InputError("parameter file '" + file.string() + "' does not exist");
+    if (std::filesystem::is_directory(status))
       throw InputError("parameter file '" + file.string()
-                       + "' does not exist or is not a regular file");
+                       + "' is a folder, not a file");
+    if (!std::filesystem::is_regular_file(status))
+      throw InputError("parameter file '" + file.string()
+                       + "' is not a regular file");
+    if (std::ifstream probe(file); !probe)
+      throw InputError("parameter file '" + file.string() + "' cannot be read ("
+                       + std::strerror(errno) + ")");
     last_parameter_file_directory
       = std::filesystem::absolute(file).parent_path();
     try
@@ -190,6 +206,121 @@ namespace compax::cli
     std::ostringstream out;
     out << value;
     return out.str();
+  }
+
+  namespace
+  {
+    std::string
+    trimmed(const std::string &text)
+    {
+      const auto first = text.find_first_not_of(" \t");
+      if (first == std::string::npos)
+        return {};
+      return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+    }
+
+    /// A number in its shortest form that reads back exactly; other text
+    /// trimmed, yes/no as true/false.
+    std::string
+    canonical_item(const std::string &item)
+    {
+      const std::string t = trimmed(item);
+      if (t == "yes")
+        return "true";
+      if (t == "no")
+        return "false";
+      char        *end   = nullptr;
+      const double value = std::strtod(t.c_str(), &end);
+      if (t.empty() || end != t.c_str() + t.size() || !std::isfinite(value))
+        return t;
+      char buffer[64];
+      if (value == std::floor(value) && std::abs(value) < 1e15)
+        {
+          std::snprintf(buffer, sizeof(buffer), "%.0f", value);
+          return buffer;
+        }
+      for (int digits = 1; digits <= 17; ++digits)
+        {
+          std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
+          if (std::strtod(buffer, nullptr) == value)
+            break;
+        }
+      return buffer;
+    }
+
+    bool
+    lies_below(const std::string &path, const std::string &prefix)
+    {
+      return path == prefix
+             || (path.size() > prefix.size() && path[prefix.size()] == '/'
+                 && path.compare(0, prefix.size(), prefix) == 0);
+    }
+  } // namespace
+
+  std::string
+  canonical_parameters(const dealii::ParameterHandler &prm,
+                       const std::vector<std::string> &include,
+                       const std::vector<std::string> &exclude,
+                       const std::vector<std::string> &files)
+  {
+    std::ostringstream all;
+    prm.print_parameters(all,
+                         dealii::ParameterHandler::ShortPRM
+                           | dealii::ParameterHandler::KeepDeclarationOrder);
+    std::istringstream       lines(all.str());
+    std::vector<std::string> sections;
+    std::string              text;
+    const auto               matches
+      = [](const std::string &path, const std::vector<std::string> &list) {
+          for (const std::string &p : list)
+            if (lies_below(path, p))
+              return true;
+          return false;
+        };
+    for (std::string line; std::getline(lines, line);)
+      {
+        const std::string t = trimmed(line);
+        if (t.rfind("subsection ", 0) == 0)
+          sections.push_back(trimmed(t.substr(11)));
+        else if (t == "end" && !sections.empty())
+          sections.pop_back();
+        else if (t.rfind("set ", 0) == 0)
+          {
+            const auto  eq   = t.find('=');
+            std::string path = "";
+            for (const std::string &s : sections)
+              path += s + "/";
+            path += trimmed(t.substr(4, eq - 4));
+            const std::string value
+              = eq == std::string::npos ? "" : trimmed(t.substr(eq + 1));
+            if ((!include.empty() && !matches(path, include))
+                || matches(path, exclude))
+              continue;
+            std::string canonical;
+            if (matches(path, files))
+              {
+                const std::string hash
+                  = value.empty()
+                      ? std::string()
+                      : coupling::file_hash(resolve_input_path(value).string());
+                canonical = value.empty()  ? ""
+                            : hash.empty() ? "missing"
+                                           : "content " + hash;
+              }
+            else
+              {
+                std::istringstream items(value);
+                bool               first = true;
+                for (std::string item; std::getline(items, item, ',');)
+                  {
+                    canonical += (first ? "" : ", ") + canonical_item(item);
+                    first = false;
+                  }
+              }
+            text += path + " = " + canonical + "\n";
+          }
+      }
+    return text;
   }
 
   void

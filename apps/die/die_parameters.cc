@@ -381,17 +381,11 @@ namespace compax::cli
     protocol.eject               = prm.get_bool("Eject");
     protocol.friction_coefficient
       = prm.get_double("Die-wall friction coefficient");
-    protocol.ejection_step      = prm.get_double("Ejection step");
-    protocol.max_ejection_steps = prm.get_integer("Maximum ejection steps");
-    if (!rerun.empty() && !std::filesystem::is_regular_file(rerun))
-      reject_entry("Protocol/Rerun branch from",
-                   rerun,
-                   "no such checkpoint file");
+    protocol.ejection_step       = prm.get_double("Ejection step");
+    protocol.max_ejection_steps  = prm.get_integer("Maximum ejection steps");
     protocol.checkpoint_interval = prm.get_integer("Checkpoint interval");
     protocol.stop_after      = prm.get_integer("Stop after compaction steps");
     const std::string resume = prm.get("Resume from");
-    if (!resume.empty() && !std::filesystem::is_regular_file(resume))
-      reject_entry("Protocol/Resume from", resume, "no such checkpoint file");
     if (!resume.empty() && !rerun.empty())
       reject_entry("Protocol/Resume from",
                    resume,
@@ -414,6 +408,24 @@ namespace compax::cli
         protocol.elastic = elastic;
       }
 
+    // A resumed run continues the checkpoint's compaction path: every entry
+    // but those that only say where it stops, how often it checkpoints and
+    // where it resumes from must match (the compaction targets done are
+    // compared on their own, so the final density may be raised; a run
+    // that stopped without convergence may resume with more iterations).
+    const std::string resume_parameters
+      = canonical_parameters(prm,
+                             {},
+                             {"Protocol/Final relative density",
+                              "Protocol/Compaction steps",
+                              "Protocol/Unloading points",
+                              "Protocol/Rerun branch from",
+                              "Protocol/Checkpoint interval",
+                              "Protocol/Stop after compaction steps",
+                              "Protocol/Resume from",
+                              "Solver/Maximum iterations"});
+    const std::string state_parameters = canonical_parameters(
+      prm, {"Material", "Material 2", "Bonding", "Packing", "Contact"});
     return {deposition,
             model,
             protocol,
@@ -421,6 +433,8 @@ namespace compax::cli
             final_density,
             steps,
             rerun,
-            resume};
+            resume,
+            resume_parameters,
+            state_parameters};
   }
 } // namespace compax::cli

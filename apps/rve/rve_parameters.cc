@@ -630,11 +630,11 @@ namespace compax::cli
     if (!s.resume_from.empty())
       s.resume_from = resolve_input_path(s.resume_from).string();
     prm.leave_subsection();
-    if (!s.resume_from.empty()
-        && !std::filesystem::is_regular_file(s.resume_from))
-      reject_entry("Checkpoints/Resume from",
-                   s.resume_from,
-                   "no such checkpoint file");
+    s.resume_parameters = canonical_parameters(
+      prm,
+      {},
+      {"Checkpoints", "Size study", "Solver/Maximum iterations"},
+      {"Strain path/Strain increments file"});
     if (!s.cell_sizes.empty() && (!s.resume_from.empty() || s.stop_after > 0))
       reject_entry("Size study/Cell sizes",
                    cell_sizes,

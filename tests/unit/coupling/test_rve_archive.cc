@@ -176,8 +176,7 @@ TEST_F(RveArchive, NotAnRveArchiveIsRejected)
   const dem::ContactModel model(material1, 1.26e6);
   const std::string       file = (dir / "other.h5").string();
   {
-    coupling::Hdf5ArchiveWriter w(file);
-    w.write_attribute("format", "something else");
+    coupling::Hdf5ArchiveWriter w(file, {"something-else", ""});
     w.commit();
   }
   EXPECT_THROW(coupling::load_rve(file, model), coupling::Hdf5ArchiveError);
