@@ -178,10 +178,7 @@ namespace compax::cli
         }
       if (call.print_parameters)
         {
-          prm.print_parameters(
-            std::cout,
-            dealii::ParameterHandler::PRM
-              | dealii::ParameterHandler::KeepDeclarationOrder);
+          print_documented_parameters(prm, std::cout);
           return success;
         }
 

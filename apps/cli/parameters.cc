@@ -5,6 +5,10 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -321,6 +325,158 @@ namespace compax::cli
           }
       }
     return text;
+  }
+
+  namespace
+  {
+    /// ParameterHandler's mangling of names in its property tree.
+    std::string
+    mangled(const std::string &name)
+    {
+      static const char digits[] = "0123456789abcdef";
+      std::string       result;
+      for (const unsigned char c : name)
+        if (std::isalnum(c))
+          result += static_cast<char>(c);
+        else
+          {
+            result += '_';
+            result += digits[c / 16];
+            result += digits[c % 16];
+          }
+      return result;
+    }
+
+    std::string
+    bound(const std::string &text)
+    {
+      if (text == "2147483647" || text == "4294967295" || text == "MAX_DOUBLE"
+          || text == "1.79769e+308")
+        return "inf";
+      if (text == "-2147483648" || text == "-MAX_DOUBLE"
+          || text == "-1.79769e+308")
+        return "-inf";
+      return text;
+    }
+
+    /// The allowed values of a pattern's machine description, in words;
+    /// empty for anything.
+    std::string
+    allowed(const std::string &d)
+    {
+      const auto range = [&](const std::string &prefix) -> std::string {
+        const auto dots = d.find("...");
+        const auto end  = d.find(" (inclusive)");
+        if (d.rfind(prefix, 0) != 0 || dots == std::string::npos
+            || end == std::string::npos)
+          return {};
+        const std::string lo
+          = bound(d.substr(prefix.size(), dots - prefix.size()));
+        const std::string hi = bound(d.substr(dots + 3, end - dots - 3));
+        return (lo == "-inf" ? "(" : "[") + lo + ", " + hi
+               + (hi == "inf" ? ")" : "]");
+      };
+      if (d.rfind("[Integer range ", 0) == 0)
+        return "an integer in " + range("[Integer range ");
+      if (d == "[Integer]")
+        return "an integer";
+      if (d.rfind("[Double ", 0) == 0)
+        return "a number in " + range("[Double ");
+      if (d == "[Bool]")
+        return "true or false";
+      if (d == "[Anything]")
+        return "any text";
+      if (d.rfind("[Selection ", 0) == 0)
+        {
+          std::string options = d.substr(11, d.size() - 12);
+          while (!options.empty() && options.back() == ' ')
+            options.pop_back();
+          return "one of " + options;
+        }
+      if (d.rfind("[List of <", 0) == 0)
+        {
+          const auto close = d.rfind("> of length ");
+          if (close == std::string::npos)
+            return {};
+          const std::string inner  = allowed(d.substr(10, close - 10));
+          const std::string length = d.substr(close + 12);
+          const auto        dots   = length.find("...");
+          const auto        end    = length.find(" (inclusive)");
+          std::string       count;
+          if (dots != std::string::npos && end != std::string::npos)
+            {
+              const std::string lo = length.substr(0, dots);
+              const std::string hi
+                = bound(length.substr(dots + 3, end - dots - 3));
+              count = hi == "inf" ? lo + " or more" : lo + " to " + hi;
+            }
+          return "a comma-separated list of " + count + " values, each "
+                 + (inner.empty() ? "any text" : inner);
+        }
+      return {};
+    }
+  } // namespace
+
+  void
+  print_documented_parameters(const dealii::ParameterHandler &prm,
+                              std::ostream                   &out)
+  {
+    std::ostringstream text, json;
+    prm.print_parameters(text,
+                         dealii::ParameterHandler::PRM
+                           | dealii::ParameterHandler::KeepDeclarationOrder);
+    prm.print_parameters(json,
+                         dealii::ParameterHandler::JSON
+                           | dealii::ParameterHandler::KeepDeclarationOrder);
+    boost::property_tree::ptree tree;
+    try
+      {
+        std::istringstream in(json.str());
+        boost::property_tree::read_json(in, tree);
+      }
+    catch (const std::exception &)
+      {
+        out << text.str();
+        return;
+      }
+    std::istringstream       lines(text.str());
+    std::vector<std::string> sections;
+    bool                     stated = false; // the comment names the range
+    for (std::string line; std::getline(lines, line);)
+      {
+        const std::string t = trimmed(line);
+        if (t.rfind("subsection ", 0) == 0)
+          sections.push_back(trimmed(t.substr(11)));
+        else if (t == "end" && !sections.empty())
+          sections.pop_back();
+        else if (t.rfind("#", 0) == 0)
+          stated = stated || t.find("Allowed:") != std::string::npos;
+        else if (t.rfind("set ", 0) == 0 && !stated)
+          {
+            // The JSON tree names entries as printed or mangled.
+            const auto                   eq   = t.find('=');
+            const auto                   name = trimmed(t.substr(4, eq - 4));
+            boost::optional<std::string> node;
+            for (const bool mangle : {false, true})
+              {
+                std::string path;
+                for (const std::string &section : sections)
+                  path += (mangle ? mangled(section) : section) + '\x1f';
+                path += (mangle ? mangled(name) : name)
+                        + "\x1fpattern_description";
+                if (!node)
+                  node = tree.get_optional<std::string>(
+                    boost::property_tree::ptree::path_type(path, '\x1f'));
+              }
+            const std::string range = node ? allowed(*node) : std::string();
+            if (!range.empty())
+              out << line.substr(0, line.find('s')) << "# Allowed: " << range
+                  << ".\n";
+          }
+        if (t.rfind("#", 0) != 0)
+          stated = false;
+        out << line << '\n';
+      }
   }
 
   void

@@ -110,6 +110,17 @@ namespace compax::cli
                        const std::vector<std::string> &exclude = {},
                        const std::vector<std::string> &files   = {});
 
+  /**
+   * Prints the parameters as a valid .prm with their documentation (what
+   * `--print-parameters` shows), every entry with its allowed values: an
+   * entry whose documentation does not state them ("Allowed: ...") gets a
+   * line "Allowed: ..." from its pattern (integer ranges, selections,
+   * lists).
+   */
+  void
+  print_documented_parameters(const dealii::ParameterHandler &prm,
+                              std::ostream                   &out);
+
   /// Throws an InputError "entry 'name' = value: message" for checks that
   /// involve several entries.
   [[noreturn]] void
