@@ -355,12 +355,44 @@ namespace compax::cli
                    format_number(deposition.die_diameter),
                    "the die must be wider than two particle diameters (> "
                      + format_number(4 * radius) + " m)");
-    if (deposition.sizes.log_sigma > 0
-        && deposition.sizes.min_radius >= deposition.sizes.max_radius)
-      reject_entry("Packing/Minimum radius",
-                   format_number(deposition.sizes.min_radius),
-                   "must be below the Maximum radius ("
-                     + format_number(deposition.sizes.max_radius) + " m)");
+    if (deposition.sizes.log_sigma > 0)
+      {
+        const auto  &sizes = deposition.sizes;
+        const double sigma = sizes.log_sigma;
+        if (sizes.min_radius >= sizes.max_radius)
+          reject_entry("Packing/Minimum radius",
+                       format_number(sizes.min_radius),
+                       "must be below the Maximum radius ("
+                         + format_number(sizes.max_radius) + " m)");
+        // The share of log-normal draws inside the cut-offs (rejection
+        // sampling needs a reasonable one).
+        const auto cdf = [&](const double r) {
+          return r <= 0 ? 0.0
+                        : 0.5
+                            * std::erfc(-std::log(r / radius)
+                                        / (sigma * std::sqrt(2.0)));
+        };
+        const double accepted = cdf(sizes.max_radius) - cdf(sizes.min_radius);
+        if (!(accepted >= 1e-3))
+          reject_entry("Packing/Minimum radius",
+                       format_number(sizes.min_radius),
+                       "the cut-offs [" + format_number(sizes.min_radius) + ", "
+                         + format_number(sizes.max_radius)
+                         + "] m keep only a fraction " + format_number(accepted)
+                         + " of the log-normal radii around the median "
+                         + format_number(radius) + " m (Log-normal sigma = "
+                         + format_number(sigma) + "); widen them");
+        if (4.0 * sizes.largest() >= deposition.die_diameter)
+          reject_entry("Packing/Log-normal sigma",
+                       format_number(sigma),
+                       "the largest radius the packing may draw, min(Maximum "
+                       "radius, Radius exp(6 sigma)) = "
+                         + format_number(sizes.largest())
+                         + " m, must be below a quarter of the die diameter ("
+                         + format_number(deposition.die_diameter / 4)
+                         + " m): lower the sigma or set Packing/Maximum "
+                           "radius");
+      }
     prm.leave_subsection();
 
     prm.enter_subsection("Protocol");
