@@ -11,6 +11,9 @@
 #include "apps/die/die_study_fits.h"
 #include "dem/die/die_setup.h"
 
+#include <signal.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -292,6 +295,70 @@ namespace compax::cli
       return r;
     }
 
+    /**
+     * die.csv as it is written, line by line. A test hook (fault
+     * injection) for the kill-and-resume tests: with the environment
+     * variable COMPAX_TEST_KILL_AFTER_ROW=<stage>,<branch>,<step> the
+     * process kills itself (SIGKILL, no clean-up at all) right after that
+     * row reached the file, as a kill from outside at that point would.
+     */
+    class KillSwitch : public std::streambuf
+    {
+    public:
+      explicit KillSwitch(std::streambuf *file)
+          : file(file)
+      {
+        if (const char *row = std::getenv("COMPAX_TEST_KILL_AFTER_ROW"))
+          prefix = std::string(row) + ",";
+      }
+
+      ~KillSwitch() override
+      {
+        file->sputn(line.data(), static_cast<std::streamsize>(line.size()));
+      }
+
+    protected:
+      int
+      overflow(const int c) override
+      {
+        if (c == traits_type::eof())
+          return 0;
+        const char ch = static_cast<char>(c);
+        xsputn(&ch, 1);
+        return c;
+      }
+
+      std::streamsize
+      xsputn(const char *s, const std::streamsize n) override
+      {
+        for (std::streamsize i = 0; i < n; ++i)
+          {
+            line += s[i];
+            if (s[i] != '\n')
+              continue;
+            file->sputn(line.data(), static_cast<std::streamsize>(line.size()));
+            if (!prefix.empty() && line.rfind(prefix, 0) == 0)
+              {
+                file->pubsync();
+                ::kill(::getpid(), SIGKILL);
+              }
+            line.clear();
+          }
+        return n;
+      }
+
+      int
+      sync() override
+      {
+        return file->pubsync();
+      }
+
+    private:
+      std::streambuf *file;
+      std::string     prefix;
+      std::string     line;
+    };
+
     /// timing.csv: the wall time of every die.csv row since the run
     /// started (empty for rows taken over from a checkpoint).
     void
@@ -456,11 +523,13 @@ namespace compax::cli
                     << std::endl;
 
         std::ofstream      csv(folder / "die.csv");
+        KillSwitch         kill_switch(csv.rdbuf());
+        std::ostream       rows(&kill_switch);
         dem::DieCompaction die(std::move(bed),
                                study.model,
                                study.protocol,
                                study.equilibrium);
-        die.set_output(&csv, &std::cout);
+        die.set_output(&rows, &std::cout);
         BranchStateWriter branch_states(folder, study.state_parameters);
         die.on_branch_state = [&branch_states](const dem::Bed    &state,
                                                const std::string &stage,
@@ -527,6 +596,7 @@ namespace compax::cli
             archive.commit();
             code = not_converged;
           }
+        rows.flush();
         csv.close();
         write_timing(folder / "timing.csv",
                      die.records(),

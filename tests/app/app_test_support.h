@@ -66,6 +66,68 @@ namespace compax::testing
       return r;
     }
 
+    /// Runs a shell command line in the test folder (the executable is
+    /// COMPAX_EXECUTABLE), e.g. with environment variables.
+    RunResult
+    shell(const std::string &command) const
+    {
+      const auto out = folder / "stdout.txt", err = folder / "stderr.txt";
+      const std::string line = "cd '" + folder.string() + "' && " + command
+                               + " > '" + out.string() + "' 2> '" + err.string()
+                               + "'";
+      const int status = std::system(line.c_str());
+      RunResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+                  read(out),
+                  read(err)};
+      std::filesystem::remove(out);
+      std::filesystem::remove(err);
+      return r;
+    }
+
+    /// Every file below the test folder (relative path and content) and
+    /// every folder (path and '/'): what was there before a run must be
+    /// there after it, unchanged.
+    std::map<std::string, std::string>
+    contents() const
+    {
+      std::map<std::string, std::string> files;
+      for (const auto &e :
+           std::filesystem::recursive_directory_iterator(folder))
+        if (e.is_regular_file())
+          files[e.path().lexically_relative(folder).string()] = read(e.path());
+        else
+          files[e.path().lexically_relative(folder).string() + "/"] = "";
+      return files;
+    }
+
+    /// Bad input that leaves everything as it was: exit code 2, one stderr
+    /// line that contains every piece of `expected` and no MPI_ABORT text,
+    /// and exactly the files of `before` (no staging folder, lock file or
+    /// output folder left behind).
+    void
+    expect_refused(const RunResult                          &r,
+                   const std::vector<std::string>           &expected,
+                   const std::map<std::string, std::string> &before) const
+    {
+      EXPECT_EQ(r.exit_code, 2) << r.err << r.out;
+      for (const std::string &piece : expected)
+        EXPECT_NE(r.err.find(piece), std::string::npos)
+          << "expected '" << piece << "' in stderr: " << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_EQ(r.err.find("MPI_ABORT"), std::string::npos) << r.err;
+      EXPECT_EQ(contents(), before);
+      std::vector<std::string> left;
+      for (const auto &e :
+           std::filesystem::recursive_directory_iterator(folder))
+        {
+          const std::string name = e.path().filename().string();
+          if (name.find(".partial-") != std::string::npos
+              || (name.size() > 5 && name.rfind(".lock") == name.size() - 5))
+            left.push_back(name);
+        }
+      EXPECT_TRUE(left.empty()) << left.front();
+    }
+
     /// Writes a file in the test folder.
     void
     write(const std::string &name, const std::string &text) const
