@@ -1,5 +1,6 @@
 #include "apps/database/database_command.h"
 
+#include "apps/cli/archive_entry.h"
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
@@ -52,9 +53,11 @@ namespace compax::cli
                         "",
                         dealii::Patterns::Anything(),
                         "A checkpoints/database.h5 (relative to the .prm) "
-                        "of an earlier run with the same parameters: "
-                        "continue after its last completed branch. Empty: "
-                        "start afresh.");
+                        "of an earlier run with the same parameters (all "
+                        "but Checkpoints and Validation; the first that "
+                        "differs is named): continue after its last "
+                        "completed branch. A damaged or foreign file is "
+                        "refused. Empty: start afresh.");
       prm.leave_subsection();
       prm.enter_subsection("Validation");
       prm.declare_entry("Held-out packing",
@@ -116,24 +119,13 @@ namespace compax::cli
     {
       const std::string        entry = "Checkpoints/Resume from";
       coupling::DatabaseResume r;
-      try
-        {
+      read_archive_entry(
+        entry, file, coupling::archive_kind::database_checkpoint, [&] {
           const coupling::Hdf5ArchiveReader h5(
             file, coupling::archive_kind::database_checkpoint, fingerprint);
           r.database = read_database(h5);
           r.bed      = coupling::load_rve(h5, "rve", model);
-        }
-      catch (const coupling::Hdf5ArchiveError &e)
-        {
-          reject_entry(entry, file, e.reason());
-        }
-      catch (const std::exception &e)
-        {
-          reject_entry(entry,
-                       file,
-                       std::string("a damaged database checkpoint (") + e.what()
-                         + ")");
-        }
+        });
       if (r.database.rows.empty() || r.database.branches.empty())
         reject_entry(entry,
                      file,

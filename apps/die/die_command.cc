@@ -1,5 +1,6 @@
 #include "apps/die/die_command.h"
 
+#include "apps/cli/archive_entry.h"
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
@@ -197,29 +198,22 @@ namespace compax::cli
     dem::Bed
     load_branch_checkpoint(const DieStudy &study, int &branch)
     {
-      const std::string entry = "Protocol/Rerun branch from";
-      const std::string file  = study.rerun_branch_from;
-      try
-        {
-          const coupling::Hdf5ArchiveReader archive(
-            file, coupling::archive_kind::die_branch, study.state_parameters);
-          const double k = archive.read_attribute("branch");
-          if (!(k >= 1 && k <= 1e6))
-            throw std::runtime_error("no branch number");
-          branch = static_cast<int>(k);
-          return load_bed(archive, "bed", study.model);
-        }
-      catch (const coupling::Hdf5ArchiveError &e)
-        {
-          reject_entry(entry, file, e.reason());
-        }
-      catch (const std::exception &e)
-        {
-          reject_entry(entry,
-                       file,
-                       std::string("a damaged die branch checkpoint (")
-                         + e.what() + ")");
-        }
+      return read_archive_entry("Protocol/Rerun branch from",
+                                study.rerun_branch_from,
+                                coupling::archive_kind::die_branch,
+                                [&] {
+                                  const coupling::Hdf5ArchiveReader archive(
+                                    study.rerun_branch_from,
+                                    coupling::archive_kind::die_branch,
+                                    study.state_parameters);
+                                  const double k
+                                    = archive.read_attribute("branch");
+                                  if (!(k >= 1 && k <= 1e6))
+                                    throw std::runtime_error(
+                                      "no branch number");
+                                  branch = static_cast<int>(k);
+                                  return load_bed(archive, "bed", study.model);
+                                });
     }
 
     /// A run resumed from a compaction checkpoint: where it stands and the
@@ -244,22 +238,11 @@ namespace compax::cli
       const std::string entry = "Protocol/Resume from";
       const std::string file  = study.resume_from;
       ResumePoint       r;
-      try
-        {
-          r.progress = read_die_checkpoint(
+      r.progress = read_archive_entry(
+        entry, file, coupling::archive_kind::die_compaction, [&] {
+          return read_die_checkpoint(
             file, study.resume_parameters, study.model, r.bed, r.branch_files);
-        }
-      catch (const coupling::Hdf5ArchiveError &e)
-        {
-          reject_entry(entry, file, e.reason());
-        }
-      catch (const std::exception &e)
-        {
-          reject_entry(entry,
-                       file,
-                       std::string("a damaged die compaction checkpoint (")
-                         + e.what() + ")");
-        }
+        });
       const int stop = study.protocol.stop_after;
       if (stop > 0 && std::size_t(stop) <= r.progress.completed_targets)
         reject_entry("Protocol/Stop after compaction steps",
@@ -423,7 +406,8 @@ namespace compax::cli
                "punch and die-wall forces and pressures, coordination "
                "number, bonding surface, bonds formed and broken, elastic "
                "recovery, residual radial and ejection pressure, solver "
-               "iterations and residual), branches.csv (one row per "
+               "iterations and residual; its wall time per row goes to "
+               "timing.csv), branches.csv (one row per "
                "unloading branch, with the tablet's E and nu), fits.csv and "
                "fits.md (Eqs. 14-24 fitted to the study), die.png (punch and "
                "die-wall pressure and Z with the fits of Eqs. 14-15), "
@@ -432,7 +416,9 @@ namespace compax::cli
                "snapshots, fabric and force histograms, and checkpoints: "
                "checkpoints/branch-<k>.h5 (Protocol/Rerun branch from) and "
                "checkpoints/compaction.h5 every Protocol/Checkpoint interval "
-               "steps (Protocol/Resume from continues an interrupted run; "
+               "steps and at the end (Protocol/Resume from continues an "
+               "interrupted run with the same parameters, its output "
+               "complete; a foreign or damaged checkpoint is refused; "
                "while running, the output is staged in .<OUTDIR>.partial-<pid> "
                "next to OUTDIR). Two particle species: Material 2 and "
                "Packing/Material fractions. Contact/Contact law = elastic "

@@ -1,5 +1,6 @@
 #include "apps/rve/rve_run.h"
 
+#include "apps/cli/archive_entry.h"
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
@@ -292,49 +293,37 @@ namespace compax::cli
   {
     const std::string entry = "Checkpoints/Resume from";
     RveProgress       p;
-    try
-      {
-        const coupling::Hdf5ArchiveReader archive(file,
-                                                  coupling::archive_kind::rve,
-                                                  study.resume_parameters);
-        bed    = coupling::load_rve(archive, "rve", study.model);
-        p.rows = unflatten(archive.read_array("rows"), rve_columns().size());
-        p.moduli
-          = unflatten(archive.read_array("moduli"), moduli_columns().size());
-        for (const double s : archive.read_array("snapshots"))
-          {
-            if (!(s >= 0 && s <= 1e9))
-              throw std::runtime_error("malformed snapshot list");
-            p.snapshots.push_back(static_cast<int>(s));
-          }
-        std::istringstream hashes(archive.read_text("snapshot_hashes"));
-        for (std::string h; std::getline(hashes, h);)
-          p.snapshot_hashes.push_back(h);
-        if (p.snapshot_hashes.size() != p.snapshots.size())
-          throw std::runtime_error("malformed snapshot list");
-        const auto F = archive.read_array("loaded_deformation");
-        if (F.size() != 9)
-          throw std::runtime_error("malformed loaded deformation");
-        for (int r = 0; r < 3; ++r)
-          for (int c = 0; c < 3; ++c)
-            p.loaded_deformation(r, c) = F[3 * r + c];
-        if (p.rows.empty())
-          throw std::runtime_error("no rows");
-        for (const auto &row : p.rows)
-          if (!(row[rve_column("step")] >= 0 && row[rve_column("step")] <= 1e9))
-            throw std::runtime_error("malformed rows");
-      }
-    catch (const coupling::Hdf5ArchiveError &e)
-      {
-        reject_entry(entry, file, e.reason());
-      }
-    catch (const std::exception &e)
-      {
-        reject_entry(entry,
-                     file,
-                     std::string("a damaged RVE checkpoint (") + e.what()
-                       + ")");
-      }
+    read_archive_entry(entry, file, coupling::archive_kind::rve, [&] {
+      const coupling::Hdf5ArchiveReader archive(file,
+                                                coupling::archive_kind::rve,
+                                                study.resume_parameters);
+      bed    = coupling::load_rve(archive, "rve", study.model);
+      p.rows = unflatten(archive.read_array("rows"), rve_columns().size());
+      p.moduli
+        = unflatten(archive.read_array("moduli"), moduli_columns().size());
+      for (const double s : archive.read_array("snapshots"))
+        {
+          if (!(s >= 0 && s <= 1e9))
+            throw std::runtime_error("malformed snapshot list");
+          p.snapshots.push_back(static_cast<int>(s));
+        }
+      std::istringstream hashes(archive.read_text("snapshot_hashes"));
+      for (std::string h; std::getline(hashes, h);)
+        p.snapshot_hashes.push_back(h);
+      if (p.snapshot_hashes.size() != p.snapshots.size())
+        throw std::runtime_error("malformed snapshot list");
+      const auto F = archive.read_array("loaded_deformation");
+      if (F.size() != 9)
+        throw std::runtime_error("malformed loaded deformation");
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          p.loaded_deformation(r, c) = F[3 * r + c];
+      if (p.rows.empty())
+        throw std::runtime_error("no rows");
+      for (const auto &row : p.rows)
+        if (!(row[rve_column("step")] >= 0 && row[rve_column("step")] <= 1e9))
+          throw std::runtime_error("malformed rows");
+    });
     // The snapshots of the earlier part, next to the checkpoint.
     const auto old_folder
       = std::filesystem::absolute(file).parent_path().parent_path();

@@ -99,10 +99,23 @@ namespace compax::cli
                          const std::string                &parameters,
                          const std::optional<unsigned int> ranks)
   {
-    const coupling::Hdf5ArchiveReader archive((folder / "tablet.h5").string(),
-                                              coupling::archive_kind::tablet,
-                                              parameters);
-    const double                      written = archive.read_attribute("ranks");
+    const std::string                 path    = (folder / "tablet.h5").string();
+    const coupling::Hdf5ArchiveReader archive = [&] {
+      try
+        {
+          return coupling::open_archive(path,
+                                        coupling::archive_kind::tablet,
+                                        parameters);
+        }
+      catch (const coupling::Hdf5ArchiveError &e)
+        {
+          // Named from the run folder that Resume from gives.
+          throw coupling::Hdf5ArchiveError(path,
+                                           "checkpoint/tablet.h5 "
+                                             + e.reason());
+        }
+    }();
+    const double written = archive.read_attribute("ranks");
     if (ranks && written != double(*ranks))
       throw std::runtime_error(
         "written by a run on " + std::to_string(std::llround(written))

@@ -3,6 +3,7 @@
 #include "apps/tablet/multiscale_material.h"
 #include "apps/tablet/tablet_checkpoint.h"
 
+#include "apps/cli/archive_entry.h"
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
@@ -354,10 +355,16 @@ namespace compax::cli
                         "",
                         dealii::Patterns::Anything(),
                         "Output folder of an earlier run with the same "
-                        "parameters and number of MPI ranks: continue its "
-                        "cycle from its checkpoint (its rows and fields are "
-                        "copied into the new output). Empty: start afresh. "
-                        "Unit: folder path.");
+                        "parameters (all but Checkpoint interval and the "
+                        "Solver's Max iterations, Max step cuts, Linear "
+                        "solver and Print Newton residuals; mesh and DPC "
+                        "table files by their content) and number of MPI "
+                        "ranks: continue its cycle from its checkpoint "
+                        "(checkpoint/tablet.h5, which lists the solver "
+                        "states with their hashes; its rows and fields are "
+                        "copied into the new output). A damaged or foreign "
+                        "checkpoint, or one of other parameters (named), is "
+                        "refused. Empty: start afresh. Unit: folder path.");
       prm.leave_subsection();
 
       declare_multiscale_parameters(prm);
@@ -396,6 +403,37 @@ namespace compax::cli
                      + fs::absolute(candidates[1].parent_path()).string();
         }
       reject_entry("Geometry/Mesh file", entry, where);
+    }
+
+    /**
+     * The checkpoint of Output/Resume from, read and checked (with the
+     * number of MPI ranks it must have been written by, if known); throws
+     * InputError naming the entry.
+     */
+    TabletCheckpoint
+    read_resume_checkpoint(const TabletSetup                &s,
+                           const std::optional<unsigned int> ranks)
+    {
+      const std::string           entry = "Output/Resume from";
+      const std::filesystem::path old(s.resume_from);
+      if (!std::filesystem::is_directory(old))
+        reject_entry(entry,
+                     s.resume_from,
+                     std::filesystem::exists(old)
+                       ? "is not a folder (give the output folder of the "
+                         "earlier run)"
+                       : "no such folder");
+      if (!std::filesystem::is_directory(old / "checkpoint"))
+        reject_entry(entry,
+                     s.resume_from,
+                     "has no checkpoint folder (run with Checkpoint interval "
+                     "> 0)");
+      return read_archive_entry(
+        entry, s.resume_from, coupling::archive_kind::tablet, [&] {
+          return read_tablet_checkpoint(old / "checkpoint",
+                                        s.resume_parameters,
+                                        ranks);
+        });
     }
 
     TabletSetup
@@ -589,40 +627,7 @@ namespace compax::cli
                                 "Solver/Print Newton residuals"},
                                {"Geometry/Mesh file", "Material/DPC table"});
       if (!s.resume_from.empty())
-        {
-          const std::filesystem::path old(s.resume_from);
-          if (!std::filesystem::is_directory(old))
-            reject_entry("Output/Resume from",
-                         s.resume_from,
-                         std::filesystem::exists(old)
-                           ? "is not a folder (give the output folder of "
-                             "the earlier run)"
-                           : "no such folder");
-          if (!std::filesystem::is_directory(old / "checkpoint"))
-            reject_entry("Output/Resume from",
-                         s.resume_from,
-                         "has no checkpoint folder (run with Checkpoint "
-                         "interval > 0)");
-          try
-            {
-              read_tablet_checkpoint(old / "checkpoint",
-                                     s.resume_parameters,
-                                     std::nullopt);
-            }
-          catch (const coupling::Hdf5ArchiveError &e)
-            {
-              reject_entry("Output/Resume from",
-                           s.resume_from,
-                           "checkpoint/tablet.h5 " + e.reason());
-            }
-          catch (const std::exception &e)
-            {
-              reject_entry("Output/Resume from",
-                           s.resume_from,
-                           std::string("a damaged tablet checkpoint (")
-                             + e.what() + ")");
-            }
-        }
+        read_resume_checkpoint(s, std::nullopt);
       return s;
     }
 
@@ -852,26 +857,23 @@ namespace compax::cli
             {
               try
                 {
-                  saved = read_tablet_checkpoint(
-                    old / "checkpoint",
-                    setup.resume_parameters,
-                    dealii::Utilities::MPI::n_mpi_processes(comm));
+                  saved = read_resume_checkpoint(
+                    setup, dealii::Utilities::MPI::n_mpi_processes(comm));
                   done = saved.steps;
                   if (done.size() > n_steps + 1)
-                    error = "its checkpoint has more steps than this cycle";
+                    reject_entry("Output/Resume from",
+                                 setup.resume_from,
+                                 "its checkpoint has more steps than this "
+                                 "cycle");
                 }
-              catch (const coupling::Hdf5ArchiveError &e)
-                {
-                  error = "checkpoint/tablet.h5 " + e.reason();
-                }
-              catch (const std::exception &e)
+              catch (const InputError &e)
                 {
                   error = e.what();
                 }
             }
           error = dealii::Utilities::MPI::broadcast(comm, error, 0);
           if (!error.empty())
-            reject_entry("Output/Resume from", setup.resume_from, error);
+            throw InputError(error);
           try
             {
               solver.load_state(old / "checkpoint");
