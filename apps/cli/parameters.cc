@@ -66,12 +66,19 @@ namespace compax::cli
   bool
   RealInterval::match(const std::string &text) const
   {
-    std::istringstream in(text);
-    double             value;
-    if (!(in >> value))
+    // strtod as deal.II's get_double(), which refuses what under- or
+    // overflows a double (1e-320, 1e999).
+    const char *begin = text.c_str();
+    while (std::isspace(static_cast<unsigned char>(*begin)))
+      ++begin;
+    char *end          = nullptr;
+    errno              = 0;
+    const double value = std::strtod(begin, &end);
+    if (end == begin || errno == ERANGE)
       return false;
-    std::string rest;
-    if (in >> rest)
+    while (std::isspace(static_cast<unsigned char>(*end)))
+      ++end;
+    if (*end != '\0')
       return false;
     if (!std::isfinite(value))
       return false;
@@ -192,6 +199,7 @@ namespace compax::cli
       {
         throw InputError("in '" + file.string() + "': " + one_line(e.what()));
       }
+    check_representable_numbers(prm);
   }
 
   std::vector<double>
@@ -259,6 +267,44 @@ namespace compax::cli
              || (path.size() > prefix.size() && path[prefix.size()] == '/'
                  && path.compare(0, prefix.size(), prefix) == 0);
     }
+
+    /// One line of a .prm as ParameterHandler prints it: the subsections
+    /// it lies in and, for a "set" line, the entry's name and value.
+    struct PrmLine
+    {
+      std::string              raw, text;
+      std::vector<std::string> sections;
+      bool                     entry = false;
+      std::string              name, value;
+    };
+
+    /// Calls visit(PrmLine) for every line of @p prm_text.
+    template <typename Visit>
+    void
+    for_each_prm_line(const std::string &prm_text, Visit &&visit)
+    {
+      std::istringstream lines(prm_text);
+      PrmLine            l;
+      for (std::string raw; std::getline(lines, raw);)
+        {
+          l.raw   = raw;
+          l.text  = trimmed(raw);
+          l.entry = false;
+          if (l.text.rfind("subsection ", 0) == 0)
+            l.sections.push_back(trimmed(l.text.substr(11)));
+          else if (l.text == "end" && !l.sections.empty())
+            l.sections.pop_back();
+          else if (l.text.rfind("set ", 0) == 0)
+            {
+              const auto eq = l.text.find('=');
+              l.entry       = true;
+              l.name        = trimmed(l.text.substr(4, eq - 4));
+              l.value
+                = eq == std::string::npos ? "" : trimmed(l.text.substr(eq + 1));
+            }
+          visit(l);
+        }
+    }
   } // namespace
 
   std::string
@@ -271,59 +317,47 @@ namespace compax::cli
     prm.print_parameters(all,
                          dealii::ParameterHandler::ShortPRM
                            | dealii::ParameterHandler::KeepDeclarationOrder);
-    std::istringstream       lines(all.str());
-    std::vector<std::string> sections;
-    std::string              text;
-    const auto               matches
+    std::string text;
+    const auto  matches
       = [](const std::string &path, const std::vector<std::string> &list) {
           for (const std::string &p : list)
             if (lies_below(path, p))
               return true;
           return false;
         };
-    for (std::string line; std::getline(lines, line);)
-      {
-        const std::string t = trimmed(line);
-        if (t.rfind("subsection ", 0) == 0)
-          sections.push_back(trimmed(t.substr(11)));
-        else if (t == "end" && !sections.empty())
-          sections.pop_back();
-        else if (t.rfind("set ", 0) == 0)
-          {
-            const auto  eq   = t.find('=');
-            std::string path = "";
-            for (const std::string &s : sections)
-              path += s + "/";
-            path += trimmed(t.substr(4, eq - 4));
-            const std::string value
-              = eq == std::string::npos ? "" : trimmed(t.substr(eq + 1));
-            if ((!include.empty() && !matches(path, include))
-                || matches(path, exclude))
-              continue;
-            std::string canonical;
-            if (matches(path, files))
-              {
-                const std::string hash
-                  = value.empty()
-                      ? std::string()
-                      : coupling::file_hash(resolve_input_path(value).string());
-                canonical = value.empty()  ? ""
-                            : hash.empty() ? "missing"
-                                           : "content " + hash;
-              }
-            else
-              {
-                std::istringstream items(value);
-                bool               first = true;
-                for (std::string item; std::getline(items, item, ',');)
-                  {
-                    canonical += (first ? "" : ", ") + canonical_item(item);
-                    first = false;
-                  }
-              }
-            text += path + " = " + canonical + "\n";
-          }
-      }
+    for_each_prm_line(all.str(), [&](const PrmLine &l) {
+      if (!l.entry)
+        return;
+      std::string path;
+      for (const std::string &s : l.sections)
+        path += s + "/";
+      path += l.name;
+      if ((!include.empty() && !matches(path, include))
+          || matches(path, exclude))
+        return;
+      std::string canonical;
+      if (matches(path, files))
+        {
+          const std::string hash
+            = l.value.empty()
+                ? std::string()
+                : coupling::file_hash(resolve_input_path(l.value).string());
+          canonical = l.value.empty() ? ""
+                      : hash.empty()  ? "missing"
+                                      : "content " + hash;
+        }
+      else
+        {
+          std::istringstream items(l.value);
+          bool               first = true;
+          for (std::string item; std::getline(items, item, ',');)
+            {
+              canonical += (first ? "" : ", ") + canonical_item(item);
+              first = false;
+            }
+        }
+      text += path + " = " + canonical + "\n";
+    });
     return text;
   }
 
@@ -415,7 +449,80 @@ namespace compax::cli
         }
       return {};
     }
+
+    /// The machine description of the pattern of the entry on line @p l,
+    /// from ParameterHandler's JSON tree; empty if it is not found.
+    std::string
+    pattern_description(const boost::property_tree::ptree &tree,
+                        const PrmLine                     &l)
+    {
+      // The JSON tree names entries as printed or mangled.
+      for (const bool mangle : {false, true})
+        {
+          std::string path;
+          for (const std::string &section : l.sections)
+            path += (mangle ? mangled(section) : section) + '\x1f';
+          path
+            += (mangle ? mangled(l.name) : l.name) + "\x1fpattern_description";
+          if (const auto node = tree.get_optional<std::string>(
+                boost::property_tree::ptree::path_type(path, '\x1f')))
+            return *node;
+        }
+      return {};
+    }
   } // namespace
+
+  void
+  check_representable_numbers(const dealii::ParameterHandler &prm)
+  {
+    std::ostringstream text, json;
+    prm.print_parameters(text,
+                         dealii::ParameterHandler::ShortPRM
+                           | dealii::ParameterHandler::KeepDeclarationOrder);
+    prm.print_parameters(json,
+                         dealii::ParameterHandler::JSON
+                           | dealii::ParameterHandler::KeepDeclarationOrder);
+    boost::property_tree::ptree tree;
+    try
+      {
+        std::istringstream in(json.str());
+        boost::property_tree::read_json(in, tree);
+      }
+    catch (const std::exception &)
+      {
+        return;
+      }
+    for_each_prm_line(text.str(), [&](const PrmLine &l) {
+      if (!l.entry)
+        return;
+      const std::string pattern = pattern_description(tree, l);
+      // Real numbers and lists of them (deal.II's patterns accept what
+      // get_double() then refuses).
+      if (pattern.find("[Double") == std::string::npos
+          && pattern.find("[Real number") == std::string::npos)
+        return;
+      std::istringstream items(l.value);
+      for (std::string item; std::getline(items, item, ',');)
+        {
+          const std::string t = trimmed(item);
+          errno               = 0;
+          char *end           = nullptr;
+          std::strtod(t.c_str(), &end);
+          if (!t.empty() && end != t.c_str() && errno == ERANGE)
+            {
+              std::string path;
+              for (const std::string &section : l.sections)
+                path += section + "/";
+              reject_entry(path + l.name,
+                           l.value,
+                           "'" + t
+                             + "' is not representable as a double "
+                               "(magnitudes between 2.2e-308 and 1.8e308, "
+                               "or 0)");
+            }
+        }
+    });
+  }
 
   void
   print_documented_parameters(const dealii::ParameterHandler &prm,
@@ -439,44 +546,22 @@ namespace compax::cli
         out << text.str();
         return;
       }
-    std::istringstream       lines(text.str());
-    std::vector<std::string> sections;
-    bool                     stated = false; // the comment names the range
-    for (std::string line; std::getline(lines, line);)
-      {
-        const std::string t = trimmed(line);
-        if (t.rfind("subsection ", 0) == 0)
-          sections.push_back(trimmed(t.substr(11)));
-        else if (t == "end" && !sections.empty())
-          sections.pop_back();
-        else if (t.rfind("#", 0) == 0)
-          stated = stated || t.find("Allowed:") != std::string::npos;
-        else if (t.rfind("set ", 0) == 0 && !stated)
-          {
-            // The JSON tree names entries as printed or mangled.
-            const auto                   eq   = t.find('=');
-            const auto                   name = trimmed(t.substr(4, eq - 4));
-            boost::optional<std::string> node;
-            for (const bool mangle : {false, true})
-              {
-                std::string path;
-                for (const std::string &section : sections)
-                  path += (mangle ? mangled(section) : section) + '\x1f';
-                path += (mangle ? mangled(name) : name)
-                        + "\x1fpattern_description";
-                if (!node)
-                  node = tree.get_optional<std::string>(
-                    boost::property_tree::ptree::path_type(path, '\x1f'));
-              }
-            const std::string range = node ? allowed(*node) : std::string();
-            if (!range.empty())
-              out << line.substr(0, line.find('s')) << "# Allowed: " << range
-                  << ".\n";
-          }
-        if (t.rfind("#", 0) != 0)
-          stated = false;
-        out << line << '\n';
-      }
+    bool stated = false; // the comment names the allowed values
+    for_each_prm_line(text.str(), [&](const PrmLine &l) {
+      const bool comment = l.text.rfind("#", 0) == 0;
+      if (comment)
+        stated = stated || l.text.find("Allowed:") != std::string::npos;
+      else if (l.entry && !stated)
+        {
+          const std::string range = allowed(pattern_description(tree, l));
+          if (!range.empty())
+            out << l.raw.substr(0, l.raw.find('s')) << "# Allowed: " << range
+                << ".\n";
+        }
+      if (!comment)
+        stated = false;
+      out << l.raw << '\n';
+    });
   }
 
   void

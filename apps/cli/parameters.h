@@ -111,6 +111,15 @@ namespace compax::cli
                        const std::vector<std::string> &files   = {});
 
   /**
+   * Throws an InputError naming the first entry with a real-number pattern
+   * whose value (or an item of its list) under- or overflows a double
+   * (e.g. 1e-320): deal.II's patterns accept such values, but reading them
+   * fails. Called by parse_parameter_file().
+   */
+  void
+  check_representable_numbers(const dealii::ParameterHandler &prm);
+
+  /**
    * Prints the parameters as a valid .prm with their documentation (what
    * `--print-parameters` shows), every entry with its allowed values: an
    * entry whose documentation does not state them ("Allowed: ...") gets a
