@@ -199,7 +199,9 @@ namespace compax::cli
                       "",
                       dealii::Patterns::Anything(),
                       "Path of a branch checkpoint written by an earlier run "
-                      "(OUTDIR/checkpoints/branch-<k>.h5): skip packing and "
+                      "with the same Material, Material 2, Bonding, Packing "
+                      "and Contact (OUTDIR/checkpoints/branch-<k>.h5): skip "
+                      "packing and "
                       "compaction and rerun that unloading branch (unloading "
                       "and ejection) from the saved state, with this file's "
                       "other protocol and solver settings. Empty: run the "
@@ -207,9 +209,10 @@ namespace compax::cli
     prm.declare_entry("Checkpoint interval",
                       "10",
                       dealii::Patterns::Integer(0, 100000),
-                      "Write checkpoints/compaction.h5 (bed, die.csv rows and "
-                      "branches so far) every this many compaction steps, "
-                      "replacing the previous one atomically; 0: never. While "
+                      "Write checkpoints/compaction.h5 (bed, die.csv rows, "
+                      "branches, fabric and histogram rows so far) every this "
+                      "many compaction steps and at the end, replacing the "
+                      "previous one atomically; 0: never. While "
                       "a run is in progress its output is staged in the "
                       "hidden folder .<OUTDIR>.partial-<pid> next to OUTDIR: "
                       "after a kill the checkpoint is there; after a stop "
@@ -229,15 +232,20 @@ namespace compax::cli
                       "",
                       dealii::Patterns::Anything(),
                       "A checkpoints/compaction.h5 written by an interrupted "
-                      "or stopped run with the same Material, Bonding, "
-                      "Packing and Solver: continue that run where the "
-                      "checkpoint was taken, skipping packing and the "
-                      "compaction done (die.csv and branches.csv get the "
-                      "earlier rows too; snapshots, fabric, histograms and "
-                      "branch checkpoints of earlier branches are copied "
-                      "from the checkpoint's run folder). Final relative "
+                      "or stopped run with the same parameters (all but "
+                      "Final relative density, Compaction steps, Unloading "
+                      "points, Checkpoint interval, Stop after compaction "
+                      "steps and Solver/Maximum iterations; the checkpoint "
+                      "names the first that differs): continue that run "
+                      "where the checkpoint was taken, skipping packing and "
+                      "the compaction done (die.csv, branches.csv, fabric.csv "
+                      "and force_histograms.csv get the earlier rows from the "
+                      "checkpoint; the earlier branches' snapshots and branch "
+                      "checkpoints are copied from the checkpoint's run "
+                      "folder, and must be there unchanged). Final relative "
                       "density may be raised; the targets done must be "
-                      "unchanged. Empty: start afresh.");
+                      "unchanged. A damaged or foreign file is refused. "
+                      "Empty: start afresh.");
     prm.declare_entry("Maximum ejection steps",
                       "40",
                       dealii::Patterns::Integer(1, 100000),

@@ -439,10 +439,16 @@ namespace compax::cli
                       "",
                       dealii::Patterns::Anything(),
                       "A checkpoints/rve.h5 (relative to the .prm) of an "
-                      "earlier run with the same "
-                      "parameters: continue its path where the checkpoint "
+                      "earlier run with the same parameters (all but "
+                      "Checkpoints, Size study and Solver/Maximum "
+                      "iterations; the strain increments file by its "
+                      "content): continue its path where the checkpoint "
                       "was taken (rve.csv and moduli.csv get the earlier "
-                      "rows too). Empty: start afresh.");
+                      "rows too; its snapshots are copied from the "
+                      "checkpoint's run folder and must be there "
+                      "unchanged). A damaged or foreign file, or one of "
+                      "other parameters (named), is refused. Empty: start "
+                      "afresh.");
     prm.leave_subsection();
 
     declare_rve_solver_parameters(prm);
