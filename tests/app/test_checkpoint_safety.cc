@@ -17,19 +17,11 @@ using compax::testing::AppTest;
 
 namespace
 {
-  /// A die study of a few seconds with a checkpoint every two targets and
-  /// two unloading branches.
-  const std::string die_study = "subsection Packing\n"
-                                " set Number of particles = 60\n"
-                                " set Die diameter = 2e-3\n"
-                                "end\n"
-                                "subsection Protocol\n"
-                                " set Final relative density = 0.7\n"
-                                " set Compaction steps = 6\n"
-                                " set Unloading points = 0.62, 0.7\n"
-                                " set Checkpoint interval = 2\n"
-                                "end\n";
+  const std::string &die_study = compax::testing::small_die_study;
+}
 
+namespace
+{
   /// A short RVE path with a checkpoint every three steps.
   const std::string rve_study = "subsection Packing\n"
                                 " set Number of particles = 60\n"

@@ -15,22 +15,10 @@
 #include <sstream>
 
 using compax::testing::AppTest;
+using compax::testing::small_die_study;
 
 namespace
 {
-  /// 60 particles, 7 targets with the unloading points 0.62 (target 5) and
-  /// 0.7 (target 7); checkpoints after targets 2, 4 and 6.
-  const std::string study = "subsection Packing\n"
-                            " set Number of particles = 60\n"
-                            " set Die diameter = 2e-3\n"
-                            "end\n"
-                            "subsection Protocol\n"
-                            " set Final relative density = 0.7\n"
-                            " set Compaction steps = 6\n"
-                            " set Unloading points = 0.62, 0.7\n"
-                            " set Checkpoint interval = 2\n"
-                            "end\n";
-
   /// parameters.prm without its Resume from line.
   std::string
   without_resume(const std::string &text)
@@ -61,7 +49,7 @@ protected:
 
 TEST_F(DieKillResume, KilledInEveryStageAndResumedWritesTheUninterruptedFiles)
 {
-  write("study.prm", study);
+  write("study.prm", small_die_study);
   const auto full = compax("die study.prm -o full");
   ASSERT_EQ(full.exit_code, 0) << full.err;
   const auto expected = files_below(folder / "full");
@@ -93,7 +81,7 @@ TEST_F(DieKillResume, KilledInEveryStageAndResumedWritesTheUninterruptedFiles)
                 row + ",");
 
       write("resume.prm",
-            study + "subsection Protocol\n set Resume from = "
+            small_die_study + "subsection Protocol\n set Resume from = "
               + (staging / "checkpoints" / "compaction.h5").string()
               + "\nend\n");
       const std::string out     = "resumed-" + row.substr(0, row.find(','));

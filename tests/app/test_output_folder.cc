@@ -164,18 +164,7 @@ TEST_F(OutputFolder, ASecondRunIntoAnOutdirInUseIsRefused)
         " set Die diameter = 2e-3\nend\n"
         "subsection Protocol\n set Final relative density = 0.66\n"
         " set Compaction steps = 4\n set Unloading points = 0.66\nend\n");
-  ASSERT_EQ(std::system(("cd '" + folder.string() + "' && ('"
-                         + COMPAX_EXECUTABLE
-                         + "' die die.prm -o busy > busy.log 2>&1 & echo $! > "
-                           "pid)")
-                          .c_str()),
-            0);
-  pid_t pid = 0;
-  for (int k = 0; k < 500 && pid <= 0; ++k)
-    {
-      std::ifstream(folder / "pid") >> pid;
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
+  const pid_t pid = start("die die.prm -o busy", "busy.log");
   ASSERT_GT(pid, 0);
   // Frozen while it holds the lock (it is taken before the staging folder
   // is made).

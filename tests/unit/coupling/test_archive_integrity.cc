@@ -7,6 +7,8 @@
 
 #include "coupling/hdf5_archive.h"
 
+#include "tests/support/temporary_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -28,33 +30,9 @@ namespace fs = std::filesystem;
 
 namespace
 {
-  class ArchiveIntegrity : public ::testing::Test
+  class ArchiveIntegrity : public compax::testing::TemporaryFolderTest
   {
   protected:
-    void
-    SetUp() override
-    {
-      const auto *info
-        = ::testing::UnitTest::GetInstance()->current_test_info();
-      dir = fs::temp_directory_path()
-            / ("compax_archive_" + std::to_string(::getpid()) + "_"
-               + info->name());
-      fs::remove_all(dir);
-      fs::create_directories(dir);
-    }
-
-    void
-    TearDown() override
-    {
-      fs::remove_all(dir);
-    }
-
-    std::string
-    file(const std::string &name) const
-    {
-      return (dir / name).string();
-    }
-
     static std::string
     bytes(const std::string &path)
     {
@@ -86,8 +64,6 @@ namespace
           return e.reason();
         }
     }
-
-    fs::path dir;
   };
 
   const std::string parameters = "Material/Radius = 0.0002\n"

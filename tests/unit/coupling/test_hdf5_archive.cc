@@ -1,5 +1,7 @@
 #include "coupling/hdf5_archive.h"
 
+#include "tests/support/temporary_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -19,34 +21,8 @@ namespace fs = std::filesystem;
 namespace
 {
   /// A fresh directory per test, removed afterwards.
-  class Hdf5Archive : public ::testing::Test
+  class Hdf5Archive : public compax::testing::TemporaryFolderTest
   {
-  protected:
-    void
-    SetUp() override
-    {
-      const auto *info
-        = ::testing::UnitTest::GetInstance()->current_test_info();
-      dir
-        = fs::temp_directory_path()
-          / ("compax_hdf5_" + std::to_string(::getpid()) + "_" + info->name());
-      fs::remove_all(dir);
-      fs::create_directories(dir);
-    }
-
-    void
-    TearDown() override
-    {
-      fs::remove_all(dir);
-    }
-
-    std::string
-    file(const std::string &name) const
-    {
-      return (dir / name).string();
-    }
-
-    fs::path dir;
   };
 
   const std::vector<double> positions

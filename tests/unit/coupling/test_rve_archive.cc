@@ -8,6 +8,8 @@
 #include "dem/rve/periodic_packing.h"
 #include "dem/rve/rve_loading.h"
 
+#include "tests/support/temporary_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -23,28 +25,8 @@ namespace
   const dem::ElastoplasticMaterial material1{5e9, 0.25, 150e6, 2.0};
   constexpr double                 R = 220e-6;
 
-  class RveArchive : public ::testing::Test
+  class RveArchive : public compax::testing::TemporaryFolderTest
   {
-  protected:
-    void
-    SetUp() override
-    {
-      const auto *info
-        = ::testing::UnitTest::GetInstance()->current_test_info();
-      dir = fs::temp_directory_path()
-            / ("compax_rve_archive_" + std::to_string(::getpid()) + "_"
-               + info->name());
-      fs::remove_all(dir);
-      fs::create_directories(dir);
-    }
-
-    void
-    TearDown() override
-    {
-      fs::remove_all(dir);
-    }
-
-    fs::path dir;
   };
 
   /// A bonded, plastically loaded cell: 80 spheres of Material 1 compacted
