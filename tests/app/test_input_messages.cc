@@ -35,6 +35,25 @@ TEST_F(InputMessages, LogNormalSigmaTooWideForTheDieIsBadInput)
                  contents());
 }
 
+TEST_F(InputMessages, NumbersThatADoubleCannotHoldAreBadInput)
+{
+  // A pattern of compax (Force tolerance) and one of deal.II (a list of
+  // doubles): 1e-320 under- and 1e999 overflows a double.
+  write("bad.prm", "set Force tolerance = 1e-320\n");
+  expect_refused(compax("bed bad.prm --check"),
+                 {"The entry value 1e-320 for the entry named Force tolerance "
+                  "does not match the given pattern: [Real number in (0, 1]]"},
+                 contents());
+  write("bad.prm",
+        "subsection Protocol\n set Unloading points = 0.7, 1e-320\nend\n");
+  expect_refused(compax("die bad.prm -o out"),
+                 {"entry 'Protocol/Unloading points' = 0.7, 1e-320: '1e-320' "
+                  "is not representable as a double"},
+                 contents());
+  write("bad.prm", "subsection Packing\n set Die diameter = 1e999\nend\n");
+  expect_refused(compax("die bad.prm --check"), {"Die diameter"}, contents());
+}
+
 TEST_F(InputMessages, BranchDensitiesMessageShowsTheValue)
 {
   write("bad.prm",
