@@ -117,9 +117,12 @@ namespace compax::cli
     }();
     const double written = archive.read_attribute("ranks");
     if (ranks && written != double(*ranks))
-      throw std::runtime_error(
-        "written by a run on " + std::to_string(std::llround(written))
-        + " MPI rank(s), this run has " + std::to_string(*ranks));
+      throw coupling::Hdf5ArchiveError(
+        path,
+        "checkpoint/tablet.h5 was written by a run on "
+          + std::to_string(std::llround(written))
+          + " MPI rank(s), this run has " + std::to_string(*ranks)
+          + " (resume on as many ranks)");
     TabletCheckpoint c;
     const auto       steps = archive.read_array("steps");
     if (steps.empty() || steps.size() % step_fields != 0)
@@ -138,11 +141,14 @@ namespace compax::cli
           throw std::runtime_error("malformed file list");
         const std::string hash = coupling::file_hash((folder / name).string());
         if (hash.empty())
-          throw std::runtime_error("its file '" + name + "' is missing");
+          throw coupling::Hdf5ArchiveError(path,
+                                           "checkpoint/tablet.h5: its file '"
+                                             + name + "' is missing");
         if (hash != line.substr(0, space))
-          throw std::runtime_error("its file '" + name
-                                   + "' differs from the one it was written "
-                                     "with (damaged)");
+          throw coupling::Hdf5ArchiveError(
+            path,
+            "checkpoint/tablet.h5: its file '" + name
+              + "' differs from the one it was written with (damaged)");
       }
     return c;
   }
