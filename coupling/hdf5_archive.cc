@@ -773,7 +773,8 @@ namespace compax::coupling
             fail("dataset '" + name + "' has an unexpected shape");
           Entry e;
           e.shape.resize(rank);
-          H5Sget_simple_extent_dims(space, e.shape.data(), nullptr);
+          if (H5Sget_simple_extent_dims(space, e.shape.data(), nullptr) != rank)
+            fail("dataset '" + name + "' has an unreadable shape (damaged)");
           const H5T_class_t type_class = H5Tget_class(type);
           const std::size_t type_size  = H5Tget_size(type);
           hid_t             mem_type   = -1;

@@ -752,6 +752,10 @@ namespace compax::cli
       {
         fail(e.what());
       }
+    // The final state as a checkpoint too: a resumed run's output holds
+    // what the uninterrupted run's does.
+    if (study.checkpoint_interval > 0 && out.code == success && !out.stopped)
+      write_rve_checkpoint(checkpoint, study, bed, progress);
 
     write_tables();
     plot(folder, !study.elastic);
