@@ -450,6 +450,28 @@ namespace compax::cli
       return {};
     }
 
+    /// The parameters as ParameterHandler's JSON tree (documentation and
+    /// pattern of every entry); empty if it cannot be read.
+    boost::property_tree::ptree
+    pattern_tree(const dealii::ParameterHandler &prm)
+    {
+      std::ostringstream json;
+      prm.print_parameters(json,
+                           dealii::ParameterHandler::JSON
+                             | dealii::ParameterHandler::KeepDeclarationOrder);
+      boost::property_tree::ptree tree;
+      try
+        {
+          std::istringstream in(json.str());
+          boost::property_tree::read_json(in, tree);
+        }
+      catch (const std::exception &)
+        {
+          tree.clear();
+        }
+      return tree;
+    }
+
     /// The machine description of the pattern of the entry on line @p l,
     /// from ParameterHandler's JSON tree; empty if it is not found.
     std::string
@@ -475,23 +497,11 @@ namespace compax::cli
   void
   check_representable_numbers(const dealii::ParameterHandler &prm)
   {
-    std::ostringstream text, json;
+    std::ostringstream text;
     prm.print_parameters(text,
                          dealii::ParameterHandler::ShortPRM
                            | dealii::ParameterHandler::KeepDeclarationOrder);
-    prm.print_parameters(json,
-                         dealii::ParameterHandler::JSON
-                           | dealii::ParameterHandler::KeepDeclarationOrder);
-    boost::property_tree::ptree tree;
-    try
-      {
-        std::istringstream in(json.str());
-        boost::property_tree::read_json(in, tree);
-      }
-    catch (const std::exception &)
-      {
-        return;
-      }
+    const boost::property_tree::ptree tree = pattern_tree(prm);
     for_each_prm_line(text.str(), [&](const PrmLine &l) {
       if (!l.entry)
         return;
@@ -528,24 +538,11 @@ namespace compax::cli
   print_documented_parameters(const dealii::ParameterHandler &prm,
                               std::ostream                   &out)
   {
-    std::ostringstream text, json;
+    std::ostringstream text;
     prm.print_parameters(text,
                          dealii::ParameterHandler::PRM
                            | dealii::ParameterHandler::KeepDeclarationOrder);
-    prm.print_parameters(json,
-                         dealii::ParameterHandler::JSON
-                           | dealii::ParameterHandler::KeepDeclarationOrder);
-    boost::property_tree::ptree tree;
-    try
-      {
-        std::istringstream in(json.str());
-        boost::property_tree::read_json(in, tree);
-      }
-    catch (const std::exception &)
-      {
-        out << text.str();
-        return;
-      }
+    const boost::property_tree::ptree tree = pattern_tree(prm);
     bool stated = false; // the comment names the allowed values
     for_each_prm_line(text.str(), [&](const PrmLine &l) {
       const bool comment = l.text.rfind("#", 0) == 0;

@@ -216,6 +216,22 @@ namespace compax::cli
                                 });
     }
 
+    /// The compaction targets from the packing's relative density @p rho_0
+    /// to the final density; throws InputError if that is not above it.
+    void
+    set_compaction_targets(DieStudy &study, const double rho_0)
+    {
+      if (study.final_density <= rho_0)
+        reject_entry("Protocol/Final relative density",
+                     format_number(study.final_density),
+                     "must exceed the packing's relative density "
+                       + format_number(rho_0));
+      study.protocol.compaction_targets
+        = dem::density_targets(rho_0,
+                               study.final_density,
+                               study.compaction_steps);
+    }
+
     /// A run resumed from a compaction checkpoint: where it stands and the
     /// folder of the run that wrote it.
     struct ResumePoint
@@ -250,16 +266,7 @@ namespace compax::cli
                      "counts from the start of the study and must exceed the "
                        + std::to_string(r.progress.completed_targets)
                        + " steps the checkpoint has done (or be 0)");
-      const double rho_0 = r.progress.rows.front().relative_density;
-      if (study.final_density <= rho_0)
-        reject_entry("Protocol/Final relative density",
-                     format_number(study.final_density),
-                     "must exceed the packing's relative density "
-                       + format_number(rho_0));
-      study.protocol.compaction_targets
-        = dem::density_targets(rho_0,
-                               study.final_density,
-                               study.compaction_steps);
+      set_compaction_targets(study, r.progress.rows.front().relative_density);
       const std::string mismatch
         = dem::DieCompaction(r.bed, study.model, study.protocol)
             .resume_mismatch(r.progress);
@@ -485,19 +492,10 @@ namespace compax::cli
                       << " particles by ballistic deposition in a "
                       << study.deposition.die_diameter * 1e3 << " mm die ..."
                       << std::endl;
-            bed                = dem::fill_die(study.deposition);
-            const double rho_0 = bed.relative_density();
-            std::cout << "  initial in-die relative density " << rho_0
-                      << std::endl;
-            if (study.final_density <= rho_0)
-              reject_entry("Protocol/Final relative density",
-                           format_number(study.final_density),
-                           "must exceed the packing's relative density "
-                             + format_number(rho_0));
-            study.protocol.compaction_targets
-              = dem::density_targets(rho_0,
-                                     study.final_density,
-                                     study.compaction_steps);
+            bed = dem::fill_die(study.deposition);
+            std::cout << "  initial in-die relative density "
+                      << bed.relative_density() << std::endl;
+            set_compaction_targets(study, bed.relative_density());
           }
         report_materials(bed, study.model);
         if (study.protocol.elastic)

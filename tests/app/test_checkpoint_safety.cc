@@ -85,6 +85,42 @@ protected:
                    before);
     expect_refused(compax(command + " resume.prm --check"), expected, before);
   }
+
+  /// The intact @p checkpoint truncated to half, and with a flipped byte
+  /// at each of @p where (fractions of its length), in the test folder:
+  /// refused by the run and --check, naming the entry.
+  void
+  expect_damage_refused(const std::string           &command,
+                        const std::string           &study,
+                        const std::string           &subsection,
+                        const std::filesystem::path &checkpoint,
+                        const std::vector<double>   &where)
+  {
+    const std::string entry  = "entry '" + subsection + "/Resume from' = ";
+    const std::string intact = bytes(checkpoint);
+    put(folder / "half.h5", intact.substr(0, intact.size() / 2));
+    expect_resume_refused(command,
+                          study,
+                          subsection,
+                          "half.h5",
+                          {entry,
+                           "half.h5: is truncated ("
+                             + std::to_string(intact.size() / 2) + " of "
+                             + std::to_string(intact.size()) + " bytes)"});
+    std::filesystem::remove(folder / "half.h5");
+    for (const double w : where)
+      {
+        put(folder / "flipped.h5", flipped(intact, w));
+        expect_resume_refused(command,
+                              study,
+                              subsection,
+                              "flipped.h5",
+                              {entry,
+                               "flipped.h5: fails its checksum (the file is "
+                               "damaged)"});
+      }
+    std::filesystem::remove(folder / "flipped.h5");
+  }
 };
 
 TEST_F(CheckpointSafety, DieRefusesForeignDamagedAndMismatchedCheckpoints)
@@ -115,28 +151,8 @@ TEST_F(CheckpointSafety, DieRefusesForeignDamagedAndMismatchedCheckpoints)
 
   // Truncated to half, and a flipped byte in the data and near the end
   // (where HDF5 keeps attributes).
-  const std::string intact = bytes(checkpoint);
-  put(folder / "half.h5", intact.substr(0, intact.size() / 2));
-  expect_resume_refused("die",
-                        die_study,
-                        "Protocol",
-                        "half.h5",
-                        {entry + "half.h5: is truncated ("
-                         + std::to_string(intact.size() / 2) + " of "
-                         + std::to_string(intact.size()) + " bytes)"});
-  for (const double where : {0.3, 0.6, 0.97})
-    {
-      put(folder / "flipped.h5", flipped(intact, where));
-      expect_resume_refused("die",
-                            die_study,
-                            "Protocol",
-                            "flipped.h5",
-                            {entry
-                             + "flipped.h5: fails its checksum (the file is "
-                               "damaged)"});
-    }
-  std::filesystem::remove(folder / "half.h5");
-  std::filesystem::remove(folder / "flipped.h5");
+  expect_damage_refused(
+    "die", die_study, "Protocol", checkpoint, {0.3, 0.6, 0.97});
 
   // Other parameters: the first differing entry with both values.
   expect_resume_refused(
@@ -218,19 +234,7 @@ TEST_F(CheckpointSafety, RveRefusesForeignDamagedAndMismatchedCheckpoints)
                         "die/checkpoints/compaction.h5",
                         {"is of kind 'die-compaction' (die compaction "
                          "checkpoint), not 'rve' (RVE checkpoint)"});
-  const std::string intact = bytes(file);
-  put(folder / "half.h5", intact.substr(0, intact.size() / 2));
-  expect_resume_refused("rve",
-                        rve_study,
-                        "Checkpoints",
-                        "half.h5",
-                        {entry, "half.h5: is truncated"});
-  put(folder / "flipped.h5", flipped(intact, 0.5));
-  expect_resume_refused("rve",
-                        rve_study,
-                        "Checkpoints",
-                        "flipped.h5",
-                        {entry, "flipped.h5: fails its checksum"});
+  expect_damage_refused("rve", rve_study, "Checkpoints", file, {0.5});
   expect_resume_refused(
     "rve",
     rve_study + "subsection Material\n set Young's modulus = 6e9\nend\n",
