@@ -112,7 +112,9 @@ namespace compax::coupling
     {
       std::vector<double> values(bytes.size() / sizeof(double));
       if (!values.empty())
-        std::memcpy(values.data(), bytes.data(), bytes.size());
+        std::memcpy(values.data(),
+                    bytes.data(),
+                    values.size() * sizeof(double));
       return values;
     }
 
