@@ -88,13 +88,25 @@ TEST_F(OutputFolder, AFolderWithTheUsersFilesIsRefused)
   expect_refused(compax("contact -o sub --overwrite"),
                  {"holds files that compax did not write"},
                  before);
+  // An OUTDIR holding a user's important.txt and sub/keep.txt.
+  std::filesystem::create_directories(folder / "mine" / "sub");
+  write("mine/important.txt", "the user's notes\n");
+  write("mine/sub/keep.txt", "keep me\n");
+  const auto with_mine = contents();
+  expect_refused(compax("contact -o mine"),
+                 {"output folder (-o) 'mine' exists and holds files that "
+                  "compax did not write; compax never deletes them"},
+                 with_mine);
+  expect_refused(compax("contact -o mine --overwrite"),
+                 {"holds files that compax did not write"},
+                 with_mine);
   // So does a run that would end without convergence (exit 3).
   write("stalls.prm",
         "subsection Packing\n set Number of particles = 60\n"
         " set Die diameter = 2e-3\nend\n"
         "subsection Solver\n set Maximum iterations = 1\nend\n");
   const auto with_prm = contents();
-  expect_refused(compax("die stalls.prm -o sub"),
+  expect_refused(compax("die stalls.prm -o mine"),
                  {"holds files that compax did not write"},
                  with_prm);
   // The default OUTDIR too.
