@@ -1,13 +1,12 @@
 #include "coupling/rve_archive.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace compax::coupling
 {
   namespace
   {
-    constexpr const char *format_tag = "compax rve state 1";
-
     /// Row-major 3x3 matrix as 9 doubles.
     std::vector<double>
     flatten(const Eigen::Matrix3d &A)
@@ -98,11 +97,13 @@ namespace compax::coupling
                                + "': inconsistent particle arrays");
     for (std::size_t i = 0; i < radii.size(); ++i)
       {
-        const auto m = static_cast<unsigned int>(materials[i]);
-        if (m >= model.n_materials())
+        if (!(materials[i] >= 0 && materials[i] < model.n_materials())
+            || !(radii[i] > 0))
           throw std::runtime_error(
-            "RVE archive group '" + group + "': particle material "
-            + std::to_string(m + 1) + " is not in the contact model");
+            "RVE archive group '" + group
+            + "': a particle's material or radius is not one of the "
+              "contact model");
+        const auto m = static_cast<unsigned int>(materials[i]);
         bed.particles.add({x[3 * i], x[3 * i + 1], x[3 * i + 2]}, radii[i], m);
       }
     const auto periodic = archive.read_array(group + "/periodic");
@@ -132,12 +133,17 @@ namespace compax::coupling
     bed.contacts.pairs.reserve(c.size() / contact_columns);
     for (std::size_t k = 0; k < c.size(); k += contact_columns)
       {
-        const auto i = static_cast<std::uint32_t>(c[k]);
-        const auto j = static_cast<std::uint32_t>(c[k + 1]);
-        if (i >= n || j >= n)
+        if (!(c[k] >= 0 && c[k] < double(n) && c[k + 1] >= 0
+              && c[k + 1] < double(n)))
           throw std::runtime_error("RVE archive group '" + group
                                    + "': contact with a particle index out "
                                      "of range");
+        for (int d = 2; d < 5; ++d)
+          if (!(std::abs(c[k + d]) < 1e6))
+            throw std::runtime_error("RVE archive group '" + group
+                                     + "': contact with an invalid image");
+        const auto              i = static_cast<std::uint32_t>(c[k]);
+        const auto              j = static_cast<std::uint32_t>(c[k + 1]);
         const dem::LatticeImage image{static_cast<std::int32_t>(c[k + 2]),
                                       static_cast<std::int32_t>(c[k + 3]),
                                       static_cast<std::int32_t>(c[k + 4])};
@@ -154,38 +160,32 @@ namespace compax::coupling
   }
 
   void
-  save_rve(const std::string &path, const dem::PeriodicBed &bed)
+  save_rve(const std::string      &path,
+           const dem::PeriodicBed &bed,
+           const std::string      &parameters)
   {
-    Hdf5ArchiveWriter archive(path);
-    archive.write_attribute("format", format_tag);
+    Hdf5ArchiveWriter archive(path, {archive_kind::rve_state, parameters});
     save_rve(archive, "rve", bed);
     archive.commit();
   }
 
   dem::PeriodicBed
-  load_rve(const std::string &path, const dem::ContactModel &model)
+  load_rve(const std::string                &path,
+           const dem::ContactModel          &model,
+           const std::optional<std::string> &parameters)
   {
-    // An exception must not unwind through an open HDF5 file (deal.II
-    // aborts then): errors are collected and thrown after it is closed.
-    dem::PeriodicBed bed;
-    std::string      error;
-    {
-      const Hdf5ArchiveReader archive(path);
-      try
-        {
-          if (!archive.has_attribute("format")
-              || archive.read_text_attribute("format") != format_tag)
-            error = "'" + path + "' is not a compax RVE archive";
-          else
-            bed = load_rve(archive, "rve", model);
-        }
-      catch (const std::exception &e)
-        {
-          error = e.what();
-        }
-    }
-    if (!error.empty())
-      throw Hdf5ArchiveError(error);
-    return bed;
+    const Hdf5ArchiveReader archive(path, archive_kind::rve_state, parameters);
+    try
+      {
+        return load_rve(archive, "rve", model);
+      }
+    catch (const Hdf5ArchiveError &)
+      {
+        throw;
+      }
+    catch (const std::exception &e)
+      {
+        throw Hdf5ArchiveError(path, e.what());
+      }
   }
 } // namespace compax::coupling

@@ -4,6 +4,7 @@
 #include "dem/rve/periodic_bed.h"
 #include "dem/solver/contact_model.h"
 
+#include <optional>
 #include <string>
 
 namespace compax::coupling
@@ -29,22 +30,26 @@ namespace compax::coupling
    * contacts.rebuild() at the same state (a restart repeats the original
    * bitwise when the original rebuilds its list at the checkpoint, as
    * `compax rve` does; otherwise to the equilibrium tolerance).
-   * Throws Hdf5ArchiveError or std::runtime_error on a malformed group;
-   * catch it while @p archive is still open (deal.II aborts if an
-   * exception unwinds through an open HDF5 file).
+   * Throws Hdf5ArchiveError or std::runtime_error on a malformed group.
    */
   dem::PeriodicBed
   load_rve(const Hdf5ArchiveReader &archive,
            const std::string       &group,
            const dem::ContactModel &model);
 
-  /// Writes an archive holding one RVE state (group "rve") atomically: a
-  /// crash leaves any previous file at @p path untouched.
+  /// Writes an archive of kind "rve-state" holding one RVE state (group
+  /// "rve") atomically: a crash leaves any previous file at @p path
+  /// untouched.
   void
-  save_rve(const std::string &path, const dem::PeriodicBed &bed);
+  save_rve(const std::string      &path,
+           const dem::PeriodicBed &bed,
+           const std::string      &parameters = "");
 
-  /// Reads the RVE state of an archive written by save_rve(path, bed);
-  /// throws Hdf5ArchiveError (after closing the file) if it is not one.
+  /// Reads the RVE state of an archive written by save_rve(path, bed),
+  /// checking its @p parameters if given; throws Hdf5ArchiveError if it is
+  /// not one.
   dem::PeriodicBed
-  load_rve(const std::string &path, const dem::ContactModel &model);
+  load_rve(const std::string                &path,
+           const dem::ContactModel          &model,
+           const std::optional<std::string> &parameters = std::nullopt);
 } // namespace compax::coupling

@@ -54,6 +54,10 @@ namespace compax::coupling
     /// neighbouring trial strains, and a tighter tolerance only makes the
     /// continuum Newton wander at that level.
     double stress_resolution = 1e-3;
+    /// The canonical text of the parameters the RVE states depend on,
+    /// stored with them in a checkpoint (archive kind "fe2-rve-states") and
+    /// checked when they are loaded; empty: none.
+    std::string checkpoint_parameters;
   };
 
   /// Work of the RVEs of one MPI rank so far (the RVE share of an FE2 run).

@@ -13,8 +13,6 @@ namespace compax::coupling
 {
   namespace
   {
-    constexpr const char *state_format = "compax fe2 material state 1";
-
     std::filesystem::path
     state_file(const std::filesystem::path &folder, const unsigned int rank)
     {
@@ -110,8 +108,9 @@ namespace compax::coupling
       = refresh(committed, model, "committed", false);
     const std::vector<double> trial_flags
       = refresh(trial, model, "trial", true);
-    Hdf5ArchiveWriter archive(state_file(folder, rank).string());
-    archive.write_attribute("format", state_format);
+    Hdf5ArchiveWriter archive(state_file(folder, rank).string(),
+                              {archive_kind::fe2_rve_states,
+                               spec.checkpoint_parameters});
     archive.write_attribute("points", static_cast<double>(committed.size()));
     archive.write_attribute("template_density", template_density);
     archive.write_array("committed_steps", committed_steps);
@@ -137,17 +136,14 @@ namespace compax::coupling
     std::vector<dem::PeriodicBed> new_templates, new_committed, new_trial;
     std::vector<double>           jamming, modulus, steps;
     double                        density = -1.0;
-    // An exception must not unwind through an open HDF5 file (deal.II
-    // aborts then): errors are collected and thrown after it is closed.
-    std::string error;
+    std::string                   error;
     {
-      const Hdf5ArchiveReader archive(path.string());
       try
         {
-          if (!archive.has_attribute("format")
-              || archive.read_text_attribute("format") != state_format)
-            throw std::runtime_error("not a multiscale-fe2 material state");
-          const double points = archive.read_attribute("points");
+          const Hdf5ArchiveReader archive(path.string(),
+                                          archive_kind::fe2_rve_states,
+                                          spec.checkpoint_parameters);
+          const double            points = archive.read_attribute("points");
           if (points != static_cast<double>(n))
             throw std::runtime_error(
               "holds the RVEs of " + std::to_string(std::llround(points))
@@ -186,6 +182,10 @@ namespace compax::coupling
               throw std::runtime_error("empty RVE in the pool");
           new_committed = load_cells(archive, "committed", n, model);
           new_trial     = load_cells(archive, "trial", n, model);
+        }
+      catch (const Hdf5ArchiveError &e)
+        {
+          error = e.reason();
         }
       catch (const std::exception &e)
         {

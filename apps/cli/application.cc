@@ -22,12 +22,30 @@ namespace compax::cli
   {
     constexpr const char *version = "0.1.0";
 
+    /// The output folder rules, for --help.
+    constexpr const char *output_rules_text
+      = "OUTDIR (default <command>-output) is written only when the run "
+        "ends (exit 0 or 3);\n"
+        "until then the run works in .<OUTDIR>.partial-<pid> next to it and "
+        "holds the\n"
+        "lock .<OUTDIR>.lock, so a second run into the same OUTDIR is "
+        "refused. compax\n"
+        "never deletes or overwrites what it did not write: an existing "
+        "OUTDIR must be\n"
+        "empty, or hold an earlier compax output (marker file .compax-output, "
+        "nothing\n"
+        "else) and then needs --overwrite. Refused always: '.', '..', a "
+        "folder holding\n"
+        "the working folder or the .prm, the home folder, '/', an existing "
+        "file.\n";
+
     /// What the words after the command name ask for.
     struct Invocation
     {
       bool                                 help             = false;
       bool                                 print_parameters = false;
       bool                                 check_only       = false;
+      bool                                 overwrite        = false;
       std::optional<std::filesystem::path> parameter_file;
       std::optional<std::filesystem::path> output;
     };
@@ -40,7 +58,8 @@ namespace compax::cli
           << " - multiscale simulation of pharmaceutical tablet die "
              "compaction\n\n"
              "Usage:\n"
-             "  compax <command> [file.prm] [-o OUTDIR]   run a study (no "
+             "  compax <command> [file.prm] [-o OUTDIR] [--overwrite]\n"
+             "                                            run a study (no "
              "file: its built-in default case)\n"
              "  compax <command> --print-parameters       print the "
              "documented defaults as a valid .prm\n"
@@ -55,7 +74,9 @@ namespace compax::cli
             << std::string(
                  12 - std::min<std::size_t>(11, command->name().size()), ' ')
             << command->summary() << '\n';
-      out << "\nExit codes: 0 success, 1 internal error, 2 bad input (no "
+      out << "\n"
+          << output_rules_text
+          << "\nExit codes: 0 success, 1 internal error, 2 bad input (no "
              "output written),\n3 solver did not converge (last good state "
              "kept in OUTDIR).\nAll quantities are in SI units.\n";
     }
@@ -74,12 +95,30 @@ namespace compax::cli
             call.print_parameters = true;
           else if (word == "--check")
             call.check_only = true;
+          else if (word == "--overwrite")
+            call.overwrite = true;
           else if (word == "-o" || word == "--output")
             {
               if (i + 1 == words.size())
                 throw InputError("option '" + word
                                  + "' needs a folder name after it");
-              call.output = words[++i];
+              const std::string &value = words[++i];
+              if (call.output)
+                throw InputError("option '" + word + "' given twice (OUTDIR '"
+                                 + call.output->string() + "' and '" + value
+                                 + "'); give one output folder");
+              if (value.empty())
+                throw InputError("option '" + word
+                                 + "' needs a folder name; got an empty one");
+              if (value[0] == '-')
+                throw InputError("option '" + word
+                                 + "' needs a folder name after it; got the "
+                                   "option '"
+                                 + value
+                                 + "' (a folder whose name starts with '-' "
+                                   "can be given as ./"
+                                 + value + ")");
+              call.output = value;
             }
           else if (!word.empty() && word[0] == '-')
             throw InputError("unknown option '" + word + "' for 'compax "
@@ -127,47 +166,57 @@ namespace compax::cli
                     << "\n\n"
                     << command.description() << "\n\nUsage: compax "
                     << command.name()
-                    << " [file.prm] [-o OUTDIR] | [file.prm] --check | "
-                       "--print-parameters | --help\nDefault OUTDIR: "
+                    << " [file.prm] [-o OUTDIR] [--overwrite] | [file.prm] "
+                       "--check | --print-parameters | --help\nDefault "
+                       "OUTDIR: "
                     << command.name()
                     << "-output. Parameters (documented, with units): "
                        "compax "
-                    << command.name() << " --print-parameters\n";
+                    << command.name() << " --print-parameters\n\n"
+                    << output_rules_text;
           return success;
         }
       if (call.print_parameters)
         {
-          prm.print_parameters(
-            std::cout,
-            dealii::ParameterHandler::PRM
-              | dealii::ParameterHandler::KeepDeclarationOrder);
+          print_documented_parameters(prm, std::cout);
           return success;
         }
 
       if (call.parameter_file)
         parse_parameter_file(prm, *call.parameter_file);
       command.check_parameters(prm);
+      OutputRules rules;
+      rules.overwrite = call.overwrite;
+      rules.command   = command.name();
+      rules.version   = version;
+      if (call.parameter_file)
+        rules.inputs.push_back(*call.parameter_file);
+      const std::filesystem::path outdir
+        = call.output.value_or(command.name() + "-output");
       if (call.check_only)
         {
+          if (call.output)
+            check_output_directory(outdir, rules);
           std::cout << "compax " << command.name() << ": parameters are valid"
                     << '\n';
           return success;
         }
 
       start_mpi(argc, argv);
-      OutputDirectory output(call.output.value_or(command.name() + "-output"));
-      std::ofstream(output.staging() / "parameters.prm") << [&] {
-        std::ostringstream used;
-        prm.print_parameters(
-          used,
-          dealii::ParameterHandler::ShortPRM
-            | dealii::ParameterHandler::KeepDeclarationOrder);
-        return used.str();
-      }();
-
-      const int  code = command.run(prm, output.staging());
-      const bool root
+      OutputDirectory output(outdir, rules);
+      const bool      root
         = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      if (root)
+        std::ofstream(output.staging() / "parameters.prm") << [&] {
+          std::ostringstream used;
+          prm.print_parameters(
+            used,
+            dealii::ParameterHandler::ShortPRM
+              | dealii::ParameterHandler::KeepDeclarationOrder);
+          return used.str();
+        }();
+
+      const int code = command.run(prm, output.staging());
       if (code == success)
         {
           output.publish();
@@ -176,7 +225,7 @@ namespace compax::cli
         }
       else if (code == not_converged)
         {
-          output.publish_partial();
+          output.publish();
           if (root)
             std::cerr << "compax " << command.name()
                       << ": stopped without convergence; the last good state "

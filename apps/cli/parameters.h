@@ -93,6 +93,43 @@ namespace compax::cli
   std::string
   format_number(double value);
 
+  /**
+   * The canonical text of the entries that must match when a run resumes
+   * from an archive (its fingerprint is stored with the archive): one line
+   * "Subsection/Entry = value" per entry whose path is or lies below one of
+   * @p include (every entry if it is empty) and neither is nor lies below
+   * one of @p exclude, in declaration order. Numbers are written in their
+   * shortest exact form (so 2e-4 and 2.0e-4 agree), each item of a
+   * comma-separated list alike, and yes/no as true/false. For the entries
+   * in @p files the value is the content of the file they name (resolved
+   * as resolve_input_path() does; "missing" if it cannot be read).
+   */
+  std::string
+  canonical_parameters(const dealii::ParameterHandler &prm,
+                       const std::vector<std::string> &include,
+                       const std::vector<std::string> &exclude = {},
+                       const std::vector<std::string> &files   = {});
+
+  /**
+   * Throws an InputError naming the first entry with a real-number pattern
+   * whose value (or an item of its list) under- or overflows a double
+   * (e.g. 1e-320): deal.II's patterns accept such values, but reading them
+   * fails. Called by parse_parameter_file().
+   */
+  void
+  check_representable_numbers(const dealii::ParameterHandler &prm);
+
+  /**
+   * Prints the parameters as a valid .prm with their documentation (what
+   * `--print-parameters` shows), every entry with its allowed values: an
+   * entry whose documentation does not state them ("Allowed: ...") gets a
+   * line "Allowed: ..." from its pattern (integer ranges, selections,
+   * lists).
+   */
+  void
+  print_documented_parameters(const dealii::ParameterHandler &prm,
+                              std::ostream                   &out);
+
   /// Throws an InputError "entry 'name' = value: message" for checks that
   /// involve several entries.
   [[noreturn]] void

@@ -13,6 +13,7 @@ namespace compax::cli
     if (!out)
       throw std::runtime_error("cannot write '" + file.string() + "'");
     out << std::setprecision(12);
+    row << std::setprecision(12);
     for (std::size_t i = 0; i < header.size(); ++i)
       out << (i ? "," : "") << header[i];
     out << '\n';
@@ -22,14 +23,14 @@ namespace compax::cli
   CsvWriter::separate()
   {
     if (cells++ > 0)
-      out << ',';
+      row << ',';
   }
 
   CsvWriter &
   CsvWriter::operator<<(const double value)
   {
     separate();
-    out << value;
+    row << value;
     return *this;
   }
 
@@ -37,7 +38,7 @@ namespace compax::cli
   CsvWriter::operator<<(const long long value)
   {
     separate();
-    out << value;
+    row << value;
     return *this;
   }
 
@@ -45,7 +46,7 @@ namespace compax::cli
   CsvWriter::operator<<(const std::string &text)
   {
     separate();
-    out << text;
+    row << text;
     return *this;
   }
 
@@ -63,8 +64,25 @@ namespace compax::cli
       throw std::logic_error("CSV row with " + std::to_string(cells)
                              + " cells for " + std::to_string(header.size())
                              + " columns");
-    out << '\n';
+    previous = row.str();
+    out << previous << '\n';
+    row.str("");
     cells = 0;
+  }
+
+  void
+  CsvWriter::add_row_text(const std::string &text)
+  {
+    if (cells != 0)
+      throw std::logic_error("CSV row text added inside a row");
+    previous = text;
+    out << text << '\n';
+  }
+
+  void
+  CsvWriter::flush()
+  {
+    out.flush();
   }
 
   void

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,22 @@ namespace compax::cli
     void
     end_row();
 
+    /// The text of the row ended last (without the line break).
+    const std::string &
+    last_row() const
+    {
+      return previous;
+    }
+
+    /// Appends a row given as its text (e.g. one ended by another writer
+    /// with the same columns).
+    void
+    add_row_text(const std::string &text);
+
+    /// Writes what is buffered to the file.
+    void
+    flush();
+
     /// Flushes and closes the file, e.g. before a plot reads it.
     void
     close();
@@ -48,6 +65,8 @@ namespace compax::cli
     separate();
 
     std::ofstream            out;
+    std::ostringstream       row;
+    std::string              previous;
     std::vector<std::string> header;
     std::size_t              cells = 0;
   };

@@ -1,5 +1,6 @@
 #include "apps/database/database_command.h"
 
+#include "apps/cli/archive_entry.h"
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
@@ -26,8 +27,6 @@ namespace compax::cli
 {
   namespace
   {
-    constexpr const char *checkpoint_format = "compax database checkpoint 1";
-
     /// Options of the command only (not of the database a tablet builds).
     struct DatabaseRunOptions
     {
@@ -54,9 +53,11 @@ namespace compax::cli
                         "",
                         dealii::Patterns::Anything(),
                         "A checkpoints/database.h5 (relative to the .prm) "
-                        "of an earlier run with the same parameters: "
-                        "continue after its last completed branch. Empty: "
-                        "start afresh.");
+                        "of an earlier run with the same parameters (all "
+                        "but Checkpoints and Validation; the first that "
+                        "differs is named): continue after its last "
+                        "completed branch. A damaged or foreign file is "
+                        "refused. Empty: start afresh.");
       prm.leave_subsection();
       prm.enter_subsection("Validation");
       prm.declare_entry("Held-out packing",
@@ -83,54 +84,17 @@ namespace compax::cli
       o.held_out_packing = prm.get_bool("Held-out packing");
       prm.leave_subsection();
       if (!o.resume_from.empty())
-        {
-          o.resume_from = resolve_input_path(o.resume_from).string();
-          if (!std::filesystem::is_regular_file(o.resume_from))
-            reject_entry("Checkpoints/Resume from",
-                         o.resume_from,
-                         "no such checkpoint file");
-        }
+        o.resume_from = resolve_input_path(o.resume_from).string();
       return o;
     }
 
     /// The parameters that shape the database (all but Checkpoints and
-    /// Validation), as text: a checkpoint resumes only the same study.
+    /// Validation), as canonical text: a checkpoint resumes only the same
+    /// study.
     std::string
-    study_fingerprint(dealii::ParameterHandler &prm)
+    study_fingerprint(const dealii::ParameterHandler &prm)
     {
-      std::ostringstream all;
-      prm.print_parameters(all,
-                           dealii::ParameterHandler::ShortPRM
-                             | dealii::ParameterHandler::KeepDeclarationOrder);
-      std::istringstream lines(all.str());
-      std::string        line, kept;
-      bool               skip  = false;
-      int                depth = 0;
-      while (std::getline(lines, line))
-        {
-          const auto        first = line.find_first_not_of(' ');
-          const std::string t
-            = first == std::string::npos ? "" : line.substr(first);
-          if (t.rfind("subsection ", 0) == 0)
-            {
-              ++depth;
-              if (depth == 1)
-                skip = t == "subsection Checkpoints"
-                       || t == "subsection Validation";
-            }
-          else if (t == "end")
-            {
-              --depth;
-              if (depth == 0 && skip)
-                {
-                  skip = false;
-                  continue;
-                }
-            }
-          if (!skip && !t.empty())
-            kept += t + "\n";
-        }
-      return kept;
+      return canonical_parameters(prm, {}, {"Checkpoints", "Validation"});
     }
 
     void
@@ -140,9 +104,9 @@ namespace compax::cli
                      const dem::PeriodicBed      &bed)
     {
       std::filesystem::create_directories(file.parent_path());
-      coupling::Hdf5ArchiveWriter h5(file.string());
-      h5.write_attribute("format", checkpoint_format);
-      h5.write_attribute("parameters", fingerprint);
+      coupling::Hdf5ArchiveWriter h5(
+        file.string(),
+        {coupling::archive_kind::database_checkpoint, fingerprint});
       write_database(h5, db);
       coupling::save_rve(h5, "rve", bed);
       h5.commit();
@@ -155,47 +119,39 @@ namespace compax::cli
     {
       const std::string        entry = "Checkpoints/Resume from";
       coupling::DatabaseResume r;
-      // Nothing may throw through the open HDF5 file (deal.II aborts).
-      std::string error;
-      bool        mismatch = false;
-      try
-        {
-          const coupling::Hdf5ArchiveReader h5(file);
-          try
-            {
-              if (!h5.has_attribute("format")
-                  || h5.read_text_attribute("format") != checkpoint_format)
-                error = "no '" + std::string(checkpoint_format) + "' tag";
-              else if (h5.read_text_attribute("parameters") != fingerprint)
-                mismatch = true;
-              else
-                {
-                  r.database = read_database(h5);
-                  r.bed      = coupling::load_rve(h5, "rve", model);
-                  if (r.database.rows.empty() || r.database.branches.empty())
-                    error = "no completed branch";
-                }
-            }
-          catch (const std::exception &e)
-            {
-              error = e.what();
-            }
-        }
-      catch (const std::exception &e)
-        {
-          error = e.what();
-        }
-      if (mismatch)
+      read_archive_entry(
+        entry, file, coupling::archive_kind::database_checkpoint, [&] {
+          const coupling::Hdf5ArchiveReader h5(
+            file, coupling::archive_kind::database_checkpoint, fingerprint);
+          r.database = read_database(h5);
+          r.bed      = coupling::load_rve(h5, "rve", model);
+        });
+      if (r.database.rows.empty() || r.database.branches.empty())
         reject_entry(entry,
                      file,
-                     "the checkpoint was written with other parameters "
-                     "(Material, Bonding, Packing, Paths or Solver); resume "
-                     "with the parameters of that run");
-      if (!error.empty())
-        reject_entry(entry,
-                     file,
-                     "not a compax database checkpoint (" + error + ")");
+                     "a database checkpoint without a completed branch");
       return r;
+    }
+
+    /// Reads Checkpoints/Resume from and checks it against Stop after
+    /// branches (the run and --check alike).
+    std::optional<coupling::DatabaseResume>
+    prepare_resume(const DatabaseRunOptions &options,
+                   const std::string        &fingerprint,
+                   const dem::ContactModel  &model)
+    {
+      if (options.resume_from.empty())
+        return std::nullopt;
+      coupling::DatabaseResume resume
+        = read_checkpoint(options.resume_from, fingerprint, model);
+      const int done = static_cast<int>(resume.database.branches.size());
+      if (options.stop_after_branches > 0
+          && options.stop_after_branches <= done)
+        reject_entry("Checkpoints/Stop after branches",
+                     std::to_string(options.stop_after_branches),
+                     "the checkpoint has " + std::to_string(done)
+                       + " branches done already; stop later or set 0");
+      return resume;
     }
 
     /// branches.csv; the plastic density and fitted cap of each branch
@@ -384,8 +340,9 @@ namespace compax::cli
       void
       check_parameters(dealii::ParameterHandler &prm) const override
       {
-        get_database_study(prm);
-        get_run_options(prm);
+        const DatabaseStudy      study   = get_database_study(prm);
+        const DatabaseRunOptions options = get_run_options(prm);
+        prepare_resume(options, study_fingerprint(prm), study.cell.model);
       }
 
       int
@@ -405,20 +362,8 @@ namespace compax::cli
           std::cout << "  [" << std::fixed << std::setprecision(1) << elapsed()
                     << " s] " << line << std::defaultfloat << std::endl;
         };
-        std::optional<coupling::DatabaseResume> resume;
-        if (!options.resume_from.empty())
-          {
-            resume         = read_checkpoint(options.resume_from,
-                                     fingerprint,
-                                     study.cell.model);
-            const int done = static_cast<int>(resume->database.branches.size());
-            if (options.stop_after_branches > 0
-                && options.stop_after_branches <= done)
-              reject_entry("Checkpoints/Stop after branches",
-                           std::to_string(options.stop_after_branches),
-                           "the checkpoint has " + std::to_string(done)
-                             + " branches done already; stop later or set 0");
-          }
+        std::optional<coupling::DatabaseResume> resume
+          = prepare_resume(options, fingerprint, study.cell.model);
         std::cout << "compax database: " << study.spec.packing.particle_count
                   << " particles (" << study.cell.size_description
                   << "), compaction to " << study.spec.final_density
@@ -445,7 +390,7 @@ namespace compax::cli
             return not_converged;
           }
         write_database_rows(folder, db);
-        write_database_archive(folder, db);
+        write_database_archive(folder, db, fingerprint);
         if (db.stopped)
           {
             write_branches(folder, db);

@@ -99,6 +99,7 @@ namespace compax::cli
     spec.final_density      = prm.get_double("Final relative density");
     spec.strain_step        = prm.get_double("Compaction strain step");
     spec.branch_densities   = get_real_list(prm, "Branch densities");
+    const std::string list  = prm.get("Branch densities");
     spec.shear_strain       = prm.get_double("Shear strain");
     spec.shear_steps        = prm.get_integer("Shear steps");
     spec.confinement_strain = prm.get_double("Confinement strain");
@@ -107,7 +108,6 @@ namespace compax::cli
     spec.radial_steps       = prm.get_integer("Radial steps");
     prm.leave_subsection();
 
-    const std::string list = prm.get("Paths/Branch densities");
     if (spec.branch_densities.size() < 2)
       reject_entry(where + "Paths/Branch densities",
                    list,
@@ -306,10 +306,12 @@ namespace compax::cli
 
   void
   write_database_archive(const std::filesystem::path &folder,
-                         const coupling::RveDatabase &db)
+                         const coupling::RveDatabase &db,
+                         const std::string           &parameters)
   {
-    coupling::Hdf5ArchiveWriter h5((folder / "database.h5").string());
-    h5.write_attribute("format", "compax RVE response database 2");
+    coupling::Hdf5ArchiveWriter h5((folder / "database.h5").string(),
+                                   {coupling::archive_kind::rve_database,
+                                    parameters});
     write_database(h5, db);
     h5.commit();
   }

@@ -42,11 +42,13 @@ namespace compax::cli
   write_database_rows(const std::filesystem::path &folder,
                       const coupling::RveDatabase &database);
 
-  /// database.h5: the same rows (with deformation gradient and parent
-  /// row) and the branch summaries.
+  /// database.h5 (an archive of kind "rve-database" with the canonical
+  /// text of the @p parameters it was computed with): the same rows (with
+  /// deformation gradient and parent row) and the branch summaries.
   void
   write_database_archive(const std::filesystem::path &folder,
-                         const coupling::RveDatabase &database);
+                         const coupling::RveDatabase &database,
+                         const std::string           &parameters);
 
   /// Writes the rows and branches of a database into an open archive
   /// (what database.h5 and the checkpoints hold).
@@ -55,7 +57,7 @@ namespace compax::cli
                  const coupling::RveDatabase &database);
 
   /// Reads what write_database() wrote, exactly; throws on a malformed
-  /// archive (catch it while the archive is open, see rve_archive.h).
+  /// archive.
   coupling::RveDatabase
   read_database(const coupling::Hdf5ArchiveReader &archive);
 

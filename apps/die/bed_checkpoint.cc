@@ -59,9 +59,16 @@ namespace compax::cli
       throw std::runtime_error("checkpoint group '" + group
                                + "': inconsistent particle arrays");
     for (std::size_t i = 0; i < radii.size(); ++i)
-      bed.particles.add({x[3 * i], x[3 * i + 1], x[3 * i + 2]},
-                        radii[i],
-                        static_cast<unsigned int>(materials[i]));
+      {
+        if (!(materials[i] >= 0 && materials[i] < model.n_materials())
+            || !(radii[i] > 0))
+          throw std::runtime_error("checkpoint group '" + group
+                                   + "': a particle's material or radius is "
+                                     "not one of this contact model");
+        bed.particles.add({x[3 * i], x[3 * i + 1], x[3 * i + 2]},
+                          radii[i],
+                          static_cast<unsigned int>(materials[i]));
+      }
     const auto walls      = archive.read_array(group + "/walls");
     bed.walls.diameter    = walls.at(0);
     bed.walls.lower_punch = walls.at(1);
@@ -71,12 +78,19 @@ namespace compax::cli
 
     // Saved histories become the "old" contacts that a rebuild merges with
     // the candidates (both sorted by (i, j) and by (i, wall)).
-    const auto &p = bed.particles;
-    const auto  h = archive.read_array(group + "/pair_histories");
+    const auto &p     = bed.particles;
+    const auto  h     = archive.read_array(group + "/pair_histories");
+    const auto  index = [&](double v) {
+      if (!(v >= 0 && v < double(p.size())))
+        throw std::runtime_error("checkpoint group '" + group
+                                 + "': a contact's particle index is out of "
+                                    "range");
+      return static_cast<std::uint32_t>(v);
+    };
     for (std::size_t k = 0; k + 3 < h.size(); k += 4)
       {
-        const auto i = static_cast<std::uint32_t>(h[k]);
-        const auto j = static_cast<std::uint32_t>(h[k + 1]);
+        const auto i = index(h[k]);
+        const auto j = index(h[k + 1]);
         bed.contacts.pairs.push_back(
           {i,
            j,
@@ -87,7 +101,10 @@ namespace compax::cli
     const auto w = archive.read_array(group + "/wall_histories");
     for (std::size_t k = 0; k + 3 < w.size(); k += 4)
       {
-        const auto i = static_cast<std::uint32_t>(w[k]);
+        const auto i = index(w[k]);
+        if (!(w[k + 1] >= 0 && w[k + 1] <= 2))
+          throw std::runtime_error("checkpoint group '" + group
+                                   + "': unknown wall");
         bed.contacts.walls.push_back(
           {i,
            static_cast<dem::Wall>(static_cast<int>(w[k + 1])),

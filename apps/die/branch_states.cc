@@ -12,8 +12,44 @@
 
 namespace compax::cli
 {
-  BranchStateWriter::BranchStateWriter(const std::filesystem::path &folder)
+  void
+  save_branch_files(coupling::Hdf5ArchiveWriter &archive,
+                    const std::string           &group,
+                    const BranchFiles           &files)
+  {
+    archive.write_text(group + "/fabric_rows", files.fabric_rows);
+    archive.write_text(group + "/histogram_rows", files.histogram_rows);
+    std::string list;
+    for (const auto &[name, hash] : files.files)
+      list += hash + " " + name + "\n";
+    archive.write_text(group + "/files", list);
+  }
+
+  BranchFiles
+  load_branch_files(const coupling::Hdf5ArchiveReader &archive,
+                    const std::string                 &group)
+  {
+    BranchFiles files;
+    files.fabric_rows    = archive.read_text(group + "/fabric_rows");
+    files.histogram_rows = archive.read_text(group + "/histogram_rows");
+    std::istringstream list(archive.read_text(group + "/files"));
+    for (std::string line; std::getline(list, line);)
+      {
+        const auto        space = line.find(' ');
+        const std::string name
+          = space == std::string::npos ? "" : line.substr(space + 1);
+        if (space != 16 || name.empty() || name.front() == '/'
+            || name.find("..") != std::string::npos)
+          throw std::runtime_error("malformed list of branch files");
+        files.files.emplace_back(name, line.substr(0, space));
+      }
+    return files;
+  }
+
+  BranchStateWriter::BranchStateWriter(const std::filesystem::path &folder,
+                                       std::string state_parameters)
       : folder(folder)
+      , state_parameters(std::move(state_parameters))
       , fabric(folder / "fabric.csv",
                {"branch",
                 "stage",
@@ -48,55 +84,65 @@ namespace compax::cli
     dem::write_pvd(folder / "particles.pvd", snapshots);
   }
 
-  int
-  BranchStateWriter::carry_over(const std::filesystem::path &old_folder,
-                                const int                    branches)
+  BranchFiles
+  BranchStateWriter::so_far()
+  {
+    fabric.flush();
+    histograms.flush();
+    return written;
+  }
+
+  void
+  BranchStateWriter::verify(const std::filesystem::path &old_folder,
+                            const BranchFiles           &earlier)
   {
     namespace fs = std::filesystem;
-    int  missing = 0;
-    auto copy    = [&](const fs::path &relative) {
-      std::error_code error;
-      fs::copy_file(old_folder / relative,
-                    folder / relative,
-                    fs::copy_options::overwrite_existing,
-                    error);
-      if (error)
-        ++missing;
-      return !error;
-    };
-    for (int b = 1; b <= branches; ++b)
+    for (const auto &[name, hash] : earlier.files)
       {
-        for (const char *stage : {"compaction", "unloading", "ejection"})
-          if (copy(fs::path("snapshots")
-                   / (std::string(stage) + "-" + std::to_string(b) + ".vtu")))
-            add_snapshot(stage, b);
-        copy(fs::path("checkpoints") / ("branch-" + std::to_string(b) + ".h5"));
+        const fs::path from = old_folder / name;
+        if (!fs::is_regular_file(from))
+          throw std::runtime_error(
+            "the earlier branches' file '" + name
+            + "' is not next to the checkpoint (in '" + old_folder.string()
+            + "'); resume from the checkpoint in its run folder");
+        if (coupling::file_hash(from.string()) != hash)
+          throw std::runtime_error("the earlier branches' file '"
+                                   + from.string()
+                                   + "' differs from the one the checkpoint "
+                                     "lists (changed since)");
       }
-    // Rows of the per-branch tables whose first cell (branch) is done.
-    for (auto [name, table] : {std::pair{"fabric.csv", &fabric},
-                               std::pair{"force_histograms.csv", &histograms}})
+  }
+
+  void
+  BranchStateWriter::carry_over(const std::filesystem::path &old_folder,
+                                const BranchFiles           &earlier)
+  {
+    namespace fs = std::filesystem;
+    verify(old_folder, earlier);
+    for (const auto &[name, hash] : earlier.files)
       {
-        std::ifstream in(old_folder / name);
-        if (!in)
-          {
-            ++missing;
-            continue;
-          }
-        std::string line;
-        std::getline(in, line); // header
-        while (std::getline(in, line))
-          {
-            if (line.empty() || std::atoi(line.c_str()) > branches)
-              continue;
-            std::istringstream cells(line);
-            for (std::string cell; std::getline(cells, cell, ',');)
-              *table << cell;
-            if (line.back() == ',')
-              table->empty();
-            table->end_row();
-          }
+        const fs::path from = old_folder / name;
+        fs::create_directories((folder / name).parent_path());
+        fs::copy_file(from,
+                      folder / name,
+                      fs::copy_options::overwrite_existing);
+        written.files.emplace_back(name, hash);
+        // snapshots/<stage>-<branch>.vtu
+        const std::string stem = fs::path(name).stem().string();
+        const auto        dash = stem.rfind('-');
+        if (fs::path(name).extension() == ".vtu" && dash != std::string::npos)
+          add_snapshot(stem.substr(0, dash),
+                       std::atoi(stem.c_str() + dash + 1));
       }
-    return missing;
+    for (auto [text, table] : {std::pair{&earlier.fabric_rows, &fabric},
+                               std::pair{&earlier.histogram_rows, &histograms}})
+      {
+        std::istringstream lines(*text);
+        for (std::string line; std::getline(lines, line);)
+          table->add_row_text(line);
+      }
+    written.fabric_rows += earlier.fabric_rows;
+    written.histogram_rows += earlier.histogram_rows;
   }
 
   void
@@ -107,6 +153,9 @@ namespace compax::cli
     const std::string name = stage + "-" + std::to_string(branch);
     dem::write_particles_vtu(folder / "snapshots" / (name + ".vtu"), bed);
     add_snapshot(stage, branch);
+    const std::string snapshot = "snapshots/" + name + ".vtu";
+    written.files.emplace_back(
+      snapshot, coupling::file_hash((folder / snapshot).string()));
 
     const auto          network = dem::loaded_contacts(bed);
     std::vector<double> magnitude(network.forces.size());
@@ -122,6 +171,7 @@ namespace compax::cli
         for (double b : spectrum.b)
           fabric << b;
         fabric.end_row();
+        written.fabric_rows += fabric.last_row() + "\n";
       }
     const auto histogram = dem::force_histogram(network.forces, 30);
     for (std::size_t k = 0; k < histogram.counts.size(); ++k)
@@ -129,18 +179,22 @@ namespace compax::cli
         histograms << branch << stage << histogram.centres[k]
                    << static_cast<long long>(histogram.counts[k]);
         histograms.end_row();
+        written.histogram_rows += histograms.last_row() + "\n";
       }
 
     if (stage == "compaction")
       {
-        coupling::Hdf5ArchiveWriter archive(
-          (folder / "checkpoints"
-           / ("branch-" + std::to_string(branch) + ".h5"))
-            .string());
-        archive.write_attribute("format", "compax die bed state 1");
+        const std::string checkpoint
+          = "checkpoints/branch-" + std::to_string(branch) + ".h5";
+        coupling::Hdf5ArchiveWriter archive((folder / checkpoint).string(),
+                                            {coupling::archive_kind::die_branch,
+                                             state_parameters});
         archive.write_attribute("relative_density", bed.relative_density());
+        archive.write_attribute("branch", double(branch));
         save_bed(archive, "bed", bed);
         archive.commit();
+        written.files.emplace_back(
+          checkpoint, coupling::file_hash((folder / checkpoint).string()));
       }
   }
 } // namespace compax::cli

@@ -2,14 +2,13 @@
 
 #include "apps/die/bed_checkpoint.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace compax::cli
 {
   namespace
   {
-    const char *const format = "compax die compaction checkpoint 1";
-
     const char *const stages[] = {"compaction", "unloading", "ejection"};
 
     double
@@ -54,7 +53,8 @@ namespace compax::cli
       visit(r.iterations);
       visit(r.cg_iterations);
       visit(r.cutbacks);
-      visit(r.wall_seconds);
+      // Not the timing (wall_seconds): the same study gives the same
+      // checkpoint.
     }
 
     template <typename Summary, typename Visit>
@@ -124,11 +124,14 @@ namespace compax::cli
 
   void
   write_die_checkpoint(const std::string      &file,
+                       const std::string      &parameters,
                        const dem::Bed         &bed,
-                       const dem::DieProgress &progress)
+                       const dem::DieProgress &progress,
+                       const BranchFiles      &branch_files)
   {
-    coupling::Hdf5ArchiveWriter archive(file);
-    archive.write_attribute("format", format);
+    coupling::Hdf5ArchiveWriter archive(file,
+                                        {coupling::archive_kind::die_compaction,
+                                         parameters});
     archive.write_attribute("completed_targets",
                             double(progress.completed_targets));
     archive.write_attribute("branches_run", double(progress.branches_run));
@@ -143,8 +146,7 @@ namespace compax::cli
     archive.write_attribute("rows", double(progress.rows.size()));
     archive.write_attribute("branches", double(progress.branches.size()));
     save_bed(archive, "bed", bed);
-    if (!progress.compaction_targets.empty())
-      archive.write_array("compaction_targets", progress.compaction_targets);
+    archive.write_array("compaction_targets", progress.compaction_targets);
 
     const std::size_t   n_fields = count_fields();
     std::vector<double> rows;
@@ -153,83 +155,77 @@ namespace compax::cli
         rows.push_back(stage_code(r.stage));
         for_each_field(r, Pack{rows});
       }
-    if (!progress.rows.empty())
-      archive.write_array("rows", rows, {progress.rows.size(), n_fields});
+    archive.write_array("rows", rows, {progress.rows.size(), n_fields});
 
     const std::size_t   n_summary = count_summary_fields();
     std::vector<double> branches;
     for (const auto &b : progress.branches)
       for_each_summary_field(b, Pack{branches});
-    if (!progress.branches.empty())
-      archive.write_array("branches",
-                          branches,
-                          {progress.branches.size(), n_summary});
+    archive.write_array("branches",
+                        branches,
+                        {progress.branches.size(), n_summary});
+    save_branch_files(archive, "branch_files", branch_files);
     archive.commit();
   }
 
   dem::DieProgress
   read_die_checkpoint(const std::string       &file,
+                      const std::string       &parameters,
                       const dem::ContactModel &model,
-                      dem::Bed                &bed)
+                      dem::Bed                &bed,
+                      BranchFiles             &branch_files)
   {
-    const coupling::Hdf5ArchiveReader archive(file);
-    if (!archive.has_attribute("format")
-        || archive.read_text_attribute("format") != format)
-      throw std::runtime_error("not a compax die compaction checkpoint "
-                               "(checkpoints/compaction.h5)");
+    const coupling::Hdf5ArchiveReader archive(
+      file, coupling::archive_kind::die_compaction, parameters);
     dem::DieProgress p;
-    p.completed_targets
-      = static_cast<std::size_t>(archive.read_attribute("completed_targets"));
-    p.branches_run = static_cast<int>(archive.read_attribute("branches_run"));
-    p.jamming_density = archive.read_attribute("jamming_density");
-    p.newton_iterations
-      = static_cast<long>(archive.read_attribute("newton_iterations"));
-    p.cg_iterations
-      = static_cast<long>(archive.read_attribute("cg_iterations"));
-    p.assemblies = static_cast<long>(archive.read_attribute("assemblies"));
-    p.fire_iterations
-      = static_cast<long>(archive.read_attribute("fire_iterations"));
-    const auto n_rows
-      = static_cast<std::size_t>(archive.read_attribute("rows"));
-    const auto n_branches
-      = static_cast<std::size_t>(archive.read_attribute("branches"));
-    bed = load_bed(archive, "bed", model);
-    if (archive.has_array("compaction_targets"))
-      p.compaction_targets = archive.read_array("compaction_targets");
+    const auto       count = [&](const std::string &name) {
+      const double v = archive.read_attribute(name);
+      if (!(v >= 0.0 && v < 1e15 && v == std::floor(v)))
+        throw std::runtime_error("attribute '" + name
+                                 + "' is not a count (damaged)");
+      return v;
+    };
+    p.completed_targets = static_cast<std::size_t>(count("completed_targets"));
+    p.branches_run      = static_cast<int>(count("branches_run"));
+    p.jamming_density   = archive.read_attribute("jamming_density");
+    p.newton_iterations = static_cast<long>(count("newton_iterations"));
+    p.cg_iterations     = static_cast<long>(count("cg_iterations"));
+    p.assemblies        = static_cast<long>(count("assemblies"));
+    p.fire_iterations   = static_cast<long>(count("fire_iterations"));
+    const auto n_rows   = static_cast<std::size_t>(count("rows"));
+    const auto n_branches = static_cast<std::size_t>(count("branches"));
+    bed                   = load_bed(archive, "bed", model);
+    p.compaction_targets  = archive.read_array("compaction_targets");
 
-    if (n_rows > 0)
+    const std::size_t n_fields = count_fields();
+    const auto        values   = archive.read_array("rows");
+    if (values.size() != n_rows * n_fields)
+      throw std::runtime_error("checkpoint rows have the wrong size");
+    const double *in = values.data();
+    for (std::size_t k = 0; k < n_rows; ++k)
       {
-        const std::size_t n_fields = count_fields();
-        const auto        values   = archive.read_array("rows");
-        if (values.size() != n_rows * n_fields)
-          throw std::runtime_error("checkpoint rows have the wrong size");
-        const double *in = values.data();
-        for (std::size_t k = 0; k < n_rows; ++k)
-          {
-            dem::DieRecord r;
-            const int      code = static_cast<int>(*in++);
-            if (code < 0 || code > 2)
-              throw std::runtime_error("checkpoint row with an unknown stage");
-            r.stage = stages[code];
-            for_each_field(r, Unpack{in});
-            p.rows.push_back(r);
-          }
+        dem::DieRecord r;
+        const int      code = static_cast<int>(*in++);
+        if (code < 0 || code > 2)
+          throw std::runtime_error("checkpoint row with an unknown stage");
+        r.stage = stages[code];
+        for_each_field(r, Unpack{in});
+        p.rows.push_back(r);
       }
-    if (n_branches > 0)
+    const std::size_t n_summary = count_summary_fields();
+    const auto        summaries = archive.read_array("branches");
+    if (summaries.size() != n_branches * n_summary)
+      throw std::runtime_error("checkpoint branches have the wrong size");
+    in = summaries.data();
+    for (std::size_t k = 0; k < n_branches; ++k)
       {
-        const std::size_t n_summary = count_summary_fields();
-        const auto        values    = archive.read_array("branches");
-        if (values.size() != n_branches * n_summary)
-          throw std::runtime_error("checkpoint branches have the wrong size");
-        const double *in = values.data();
-        for (std::size_t k = 0; k < n_branches; ++k)
-          {
-            dem::BranchSummary s;
-            for_each_summary_field(s, Unpack{in});
-            p.branches.push_back(s);
-          }
+        dem::BranchSummary s;
+        for_each_summary_field(s, Unpack{in});
+        p.branches.push_back(s);
       }
-    if (p.completed_targets > p.compaction_targets.size() || p.rows.empty())
+    branch_files = load_branch_files(archive, "branch_files");
+    if (p.completed_targets > p.compaction_targets.size() || p.rows.empty()
+        || p.branches_run < 0)
       throw std::runtime_error("inconsistent die checkpoint");
     return p;
   }

@@ -1,5 +1,6 @@
 #include "apps/die/die_command.h"
 
+#include "apps/cli/archive_entry.h"
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
@@ -10,6 +11,9 @@
 #include "apps/die/die_parameters.h"
 #include "apps/die/die_study_fits.h"
 #include "dem/die/die_setup.h"
+
+#include <signal.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <cmath>
@@ -192,27 +196,175 @@ namespace compax::cli
 
     /// The bed saved in checkpoints/branch-<k>.h5, and k.
     dem::Bed
-    load_branch_checkpoint(const std::string       &file,
-                           const dem::ContactModel &model,
-                           int                     &branch)
+    load_branch_checkpoint(const DieStudy &study, int &branch)
     {
-      const std::string name = std::filesystem::path(file).stem().string();
-      const auto        dash = name.rfind('-');
-      branch
-        = dash == std::string::npos ? 1 : std::atoi(name.c_str() + dash + 1);
-      if (branch < 1)
-        branch = 1;
+      return read_archive_entry("Protocol/Rerun branch from",
+                                study.rerun_branch_from,
+                                coupling::archive_kind::die_branch,
+                                [&] {
+                                  const coupling::Hdf5ArchiveReader archive(
+                                    study.rerun_branch_from,
+                                    coupling::archive_kind::die_branch,
+                                    study.state_parameters);
+                                  const double k
+                                    = archive.read_attribute("branch");
+                                  if (!(k >= 1 && k <= 1e6))
+                                    throw std::runtime_error(
+                                      "no branch number");
+                                  branch = static_cast<int>(k);
+                                  return load_bed(archive, "bed", study.model);
+                                });
+    }
+
+    /// The compaction targets from the packing's relative density @p rho_0
+    /// to the final density; throws InputError if that is not above it.
+    void
+    set_compaction_targets(DieStudy &study, const double rho_0)
+    {
+      if (study.final_density <= rho_0)
+        reject_entry("Protocol/Final relative density",
+                     format_number(study.final_density),
+                     "must exceed the packing's relative density "
+                       + format_number(rho_0));
+      study.protocol.compaction_targets
+        = dem::density_targets(rho_0,
+                               study.final_density,
+                               study.compaction_steps);
+    }
+
+    /// A run resumed from a compaction checkpoint: where it stands and the
+    /// folder of the run that wrote it.
+    struct ResumePoint
+    {
+      dem::Bed              bed;
+      dem::DieProgress      progress;
+      BranchFiles           branch_files;
+      std::filesystem::path old_folder;
+    };
+
+    /**
+     * Reads and checks Protocol/Resume from (the archive, the parameters,
+     * the compaction targets done, the earlier branches' files next to it)
+     * and sets the study's compaction targets; throws InputError naming
+     * the entry. What the run and --check do alike.
+     */
+    ResumePoint
+    prepare_resume(DieStudy &study)
+    {
+      const std::string entry = "Protocol/Resume from";
+      const std::string file  = study.resume_from;
+      ResumePoint       r;
+      r.progress = read_archive_entry(
+        entry, file, coupling::archive_kind::die_compaction, [&] {
+          return read_die_checkpoint(
+            file, study.resume_parameters, study.model, r.bed, r.branch_files);
+        });
+      const int stop = study.protocol.stop_after;
+      if (stop > 0 && std::size_t(stop) <= r.progress.completed_targets)
+        reject_entry("Protocol/Stop after compaction steps",
+                     std::to_string(stop),
+                     "counts from the start of the study and must exceed the "
+                       + std::to_string(r.progress.completed_targets)
+                       + " steps the checkpoint has done (or be 0)");
+      set_compaction_targets(study, r.progress.rows.front().relative_density);
+      const std::string mismatch
+        = dem::DieCompaction(r.bed, study.model, study.protocol)
+            .resume_mismatch(r.progress);
+      if (!mismatch.empty())
+        reject_entry(entry, file, mismatch);
+      r.old_folder
+        = std::filesystem::absolute(file).parent_path().parent_path();
       try
         {
-          const coupling::Hdf5ArchiveReader archive(file);
-          return load_bed(archive, "bed", model);
+          BranchStateWriter::verify(r.old_folder, r.branch_files);
         }
       catch (const std::exception &e)
         {
-          reject_entry("Protocol/Rerun branch from",
-                       file,
-                       std::string("not a compax die checkpoint (") + e.what()
-                         + ")");
+          reject_entry(entry, file, e.what());
+        }
+      return r;
+    }
+
+    /**
+     * die.csv as it is written, line by line. A test hook (fault
+     * injection) for the kill-and-resume tests: with the environment
+     * variable COMPAX_TEST_KILL_AFTER_ROW=<stage>,<branch>,<step> the
+     * process kills itself (SIGKILL, no clean-up at all) right after that
+     * row reached the file, as a kill from outside at that point would.
+     */
+    class KillSwitch : public std::streambuf
+    {
+    public:
+      explicit KillSwitch(std::streambuf *file)
+          : file(file)
+      {
+        if (const char *row = std::getenv("COMPAX_TEST_KILL_AFTER_ROW"))
+          prefix = std::string(row) + ",";
+      }
+
+      ~KillSwitch() override
+      {
+        file->sputn(line.data(), static_cast<std::streamsize>(line.size()));
+      }
+
+    protected:
+      int
+      overflow(const int c) override
+      {
+        if (c == traits_type::eof())
+          return 0;
+        const char ch = static_cast<char>(c);
+        xsputn(&ch, 1);
+        return c;
+      }
+
+      std::streamsize
+      xsputn(const char *s, const std::streamsize n) override
+      {
+        for (std::streamsize i = 0; i < n; ++i)
+          {
+            line += s[i];
+            if (s[i] != '\n')
+              continue;
+            file->sputn(line.data(), static_cast<std::streamsize>(line.size()));
+            if (!prefix.empty() && line.rfind(prefix, 0) == 0)
+              {
+                file->pubsync();
+                ::kill(::getpid(), SIGKILL);
+              }
+            line.clear();
+          }
+        return n;
+      }
+
+      int
+      sync() override
+      {
+        return file->pubsync();
+      }
+
+    private:
+      std::streambuf *file;
+      std::string     prefix;
+      std::string     line;
+    };
+
+    /// timing.csv: the wall time of every die.csv row since the run
+    /// started (empty for rows taken over from a checkpoint).
+    void
+    write_timing(const std::filesystem::path       &file,
+                 const std::vector<dem::DieRecord> &rows,
+                 const std::size_t                  taken_over)
+    {
+      CsvWriter csv(file, {"stage", "branch", "step", "wall_seconds"});
+      for (std::size_t k = 0; k < rows.size(); ++k)
+        {
+          csv << rows[k].stage << rows[k].branch << rows[k].step;
+          if (k < taken_over)
+            csv.empty();
+          else
+            csv << rows[k].wall_seconds;
+          csv.end_row();
         }
     }
 
@@ -261,7 +413,8 @@ namespace compax::cli
                "punch and die-wall forces and pressures, coordination "
                "number, bonding surface, bonds formed and broken, elastic "
                "recovery, residual radial and ejection pressure, solver "
-               "iterations and residual), branches.csv (one row per "
+               "iterations and residual; its wall time per row goes to "
+               "timing.csv), branches.csv (one row per "
                "unloading branch, with the tablet's E and nu), fits.csv and "
                "fits.md (Eqs. 14-24 fitted to the study), die.png (punch and "
                "die-wall pressure and Z with the fits of Eqs. 14-15), "
@@ -270,7 +423,9 @@ namespace compax::cli
                "snapshots, fabric and force histograms, and checkpoints: "
                "checkpoints/branch-<k>.h5 (Protocol/Rerun branch from) and "
                "checkpoints/compaction.h5 every Protocol/Checkpoint interval "
-               "steps (Protocol/Resume from continues an interrupted run; "
+               "steps and at the end (Protocol/Resume from continues an "
+               "interrupted run with the same parameters, its output "
+               "complete; a foreign or damaged checkpoint is refused; "
                "while running, the output is staged in .<OUTDIR>.partial-<pid> "
                "next to OUTDIR). Two particle species: Material 2 and "
                "Packing/Material fractions. Contact/Contact law = elastic "
@@ -296,60 +451,36 @@ namespace compax::cli
       void
       check_parameters(dealii::ParameterHandler &prm) const override
       {
-        get_die_study(prm);
+        DieStudy study = get_die_study(prm);
+        if (!study.resume_from.empty())
+          prepare_resume(study);
+        else if (!study.rerun_branch_from.empty())
+          {
+            int branch = 0;
+            load_branch_checkpoint(study, branch);
+          }
       }
 
       int
       run(dealii::ParameterHandler    &prm,
           const std::filesystem::path &folder) const override
       {
-        DieStudy   study        = get_die_study(prm);
-        const auto started      = std::chrono::steady_clock::now();
-        int        rerun_branch = 0;
-        dem::Bed   bed;
-        std::optional<dem::DieProgress> resumed;
+        DieStudy                   study   = get_die_study(prm);
+        const auto                 started = std::chrono::steady_clock::now();
+        int                        rerun_branch = 0;
+        dem::Bed                   bed;
+        std::optional<ResumePoint> resumed;
         if (!study.resume_from.empty())
           {
-            try
-              {
-                resumed
-                  = read_die_checkpoint(study.resume_from, study.model, bed);
-              }
-            catch (const std::exception &e)
-              {
-                reject_entry("Protocol/Resume from",
-                             study.resume_from,
-                             std::string("not a compax die compaction "
-                                         "checkpoint (")
-                               + e.what() + ")");
-              }
-            const int stop = study.protocol.stop_after;
-            if (stop > 0 && std::size_t(stop) <= resumed->completed_targets)
-              reject_entry("Protocol/Stop after compaction steps",
-                           std::to_string(stop),
-                           "counts from the start of the study and must "
-                           "exceed the "
-                             + std::to_string(resumed->completed_targets)
-                             + " steps the checkpoint has done (or be 0)");
-            const double rho_0 = resumed->rows.front().relative_density;
-            if (study.final_density <= rho_0)
-              reject_entry("Protocol/Final relative density",
-                           format_number(study.final_density),
-                           "must exceed the packing's relative density "
-                             + format_number(rho_0));
-            study.protocol.compaction_targets
-              = dem::density_targets(rho_0,
-                                     study.final_density,
-                                     study.compaction_steps);
+            resumed = prepare_resume(study);
+            bed     = resumed->bed;
             std::cout << "Resuming from " << study.resume_from
                       << " (in-die relative density " << bed.relative_density()
                       << ")" << std::endl;
           }
         else if (!study.rerun_branch_from.empty())
           {
-            bed = load_branch_checkpoint(study.rerun_branch_from,
-                                         study.model,
-                                         rerun_branch);
+            bed = load_branch_checkpoint(study, rerun_branch);
             std::cout << "Rerunning unloading branch " << rerun_branch
                       << " from " << study.rerun_branch_from
                       << " (in-die relative density " << bed.relative_density()
@@ -361,19 +492,10 @@ namespace compax::cli
                       << " particles by ballistic deposition in a "
                       << study.deposition.die_diameter * 1e3 << " mm die ..."
                       << std::endl;
-            bed                = dem::fill_die(study.deposition);
-            const double rho_0 = bed.relative_density();
-            std::cout << "  initial in-die relative density " << rho_0
-                      << std::endl;
-            if (study.final_density <= rho_0)
-              reject_entry("Protocol/Final relative density",
-                           format_number(study.final_density),
-                           "must exceed the packing's relative density "
-                             + format_number(rho_0));
-            study.protocol.compaction_targets
-              = dem::density_targets(rho_0,
-                                     study.final_density,
-                                     study.compaction_steps);
+            bed = dem::fill_die(study.deposition);
+            std::cout << "  initial in-die relative density "
+                      << bed.relative_density() << std::endl;
+            set_compaction_targets(study, bed.relative_density());
           }
         report_materials(bed, study.model);
         if (study.protocol.elastic)
@@ -385,12 +507,14 @@ namespace compax::cli
                     << std::endl;
 
         std::ofstream      csv(folder / "die.csv");
+        KillSwitch         kill_switch(csv.rdbuf());
+        std::ostream       rows(&kill_switch);
         dem::DieCompaction die(std::move(bed),
                                study.model,
                                study.protocol,
                                study.equilibrium);
-        die.set_output(&csv, &std::cout);
-        BranchStateWriter branch_states(folder);
+        die.set_output(&rows, &std::cout);
+        BranchStateWriter branch_states(folder, study.state_parameters);
         die.on_branch_state = [&branch_states](const dem::Bed    &state,
                                                const std::string &stage,
                                                int                branch) {
@@ -398,22 +522,26 @@ namespace compax::cli
         };
         const auto checkpoint = folder / "checkpoints" / "compaction.h5";
         die.on_checkpoint
-          = [&checkpoint](const dem::Bed &state, const dem::DieProgress &p) {
-              write_die_checkpoint(checkpoint.string(), state, p);
+          = [&](const dem::Bed &state, const dem::DieProgress &p) {
+              write_die_checkpoint(checkpoint.string(),
+                                   study.resume_parameters,
+                                   state,
+                                   p,
+                                   branch_states.so_far());
             };
         if (resumed)
           {
-            const std::string mismatch = die.resume_mismatch(*resumed);
-            if (!mismatch.empty())
-              reject_entry("Protocol/Resume from", study.resume_from, mismatch);
-            const auto old_folder = std::filesystem::absolute(study.resume_from)
-                                      .parent_path()
-                                      .parent_path();
-            if (branch_states.carry_over(old_folder, resumed->branches_run) > 0)
-              std::cout << "  note: some snapshots, fabric or histogram rows "
-                           "of the earlier branches were not found next to "
-                           "the checkpoint (in "
-                        << old_folder.string() << ")" << std::endl;
+            try
+              {
+                branch_states.carry_over(resumed->old_folder,
+                                         resumed->branch_files);
+              }
+            catch (const std::exception &e)
+              {
+                reject_entry("Protocol/Resume from",
+                             study.resume_from,
+                             e.what());
+              }
           }
         int code = success;
         try
@@ -421,9 +549,18 @@ namespace compax::cli
             if (rerun_branch > 0)
               die.rerun_branch(rerun_branch);
             else if (resumed)
-              die.resume(*resumed);
+              die.resume(resumed->progress);
             else
               die.run();
+            // The final state as a checkpoint too: the output of a resumed
+            // run is that of the uninterrupted one.
+            if (rerun_branch == 0 && !die.stopped()
+                && study.protocol.checkpoint_interval > 0)
+              write_die_checkpoint(checkpoint.string(),
+                                   study.resume_parameters,
+                                   die.bed(),
+                                   die.progress_state(),
+                                   branch_states.so_far());
             if (die.stopped())
               std::cout << "Stopped as asked; continue with\n  set Resume "
                            "from = <OUTDIR>/checkpoints/compaction.h5\nin "
@@ -436,14 +573,18 @@ namespace compax::cli
                       << "; the converged steps are kept in die.csv and the "
                          "last converged state in last_converged.h5\n";
             coupling::Hdf5ArchiveWriter archive(
-              (folder / "last_converged.h5").string());
-            archive.write_attribute("format", "compax die bed state 1");
+              (folder / "last_converged.h5").string(),
+              {coupling::archive_kind::die_state, study.state_parameters});
             archive.write_attribute("failure", die.failure());
             save_bed(archive, "bed", die.last_converged());
             archive.commit();
             code = not_converged;
           }
+        rows.flush();
         csv.close();
+        write_timing(folder / "timing.csv",
+                     die.records(),
+                     resumed ? resumed->progress.rows.size() : 0);
 
         write_branches(folder / "branches.csv", die.branches());
         const CompactionFits fits = write_die_fits(folder,

@@ -199,7 +199,9 @@ namespace compax::cli
                       "",
                       dealii::Patterns::Anything(),
                       "Path of a branch checkpoint written by an earlier run "
-                      "(OUTDIR/checkpoints/branch-<k>.h5): skip packing and "
+                      "with the same Material, Material 2, Bonding, Packing "
+                      "and Contact (OUTDIR/checkpoints/branch-<k>.h5): skip "
+                      "packing and "
                       "compaction and rerun that unloading branch (unloading "
                       "and ejection) from the saved state, with this file's "
                       "other protocol and solver settings. Empty: run the "
@@ -207,9 +209,10 @@ namespace compax::cli
     prm.declare_entry("Checkpoint interval",
                       "10",
                       dealii::Patterns::Integer(0, 100000),
-                      "Write checkpoints/compaction.h5 (bed, die.csv rows and "
-                      "branches so far) every this many compaction steps, "
-                      "replacing the previous one atomically; 0: never. While "
+                      "Write checkpoints/compaction.h5 (bed, die.csv rows, "
+                      "branches, fabric and histogram rows so far) every this "
+                      "many compaction steps and at the end, replacing the "
+                      "previous one atomically; 0: never. While "
                       "a run is in progress its output is staged in the "
                       "hidden folder .<OUTDIR>.partial-<pid> next to OUTDIR: "
                       "after a kill the checkpoint is there; after a stop "
@@ -229,15 +232,20 @@ namespace compax::cli
                       "",
                       dealii::Patterns::Anything(),
                       "A checkpoints/compaction.h5 written by an interrupted "
-                      "or stopped run with the same Material, Bonding, "
-                      "Packing and Solver: continue that run where the "
-                      "checkpoint was taken, skipping packing and the "
-                      "compaction done (die.csv and branches.csv get the "
-                      "earlier rows too; snapshots, fabric, histograms and "
-                      "branch checkpoints of earlier branches are copied "
-                      "from the checkpoint's run folder). Final relative "
+                      "or stopped run with the same parameters (all but "
+                      "Final relative density, Compaction steps, Unloading "
+                      "points, Checkpoint interval, Stop after compaction "
+                      "steps and Solver/Maximum iterations; the checkpoint "
+                      "names the first that differs): continue that run "
+                      "where the checkpoint was taken, skipping packing and "
+                      "the compaction done (die.csv, branches.csv, fabric.csv "
+                      "and force_histograms.csv get the earlier rows from the "
+                      "checkpoint; the earlier branches' snapshots and branch "
+                      "checkpoints are copied from the checkpoint's run "
+                      "folder, and must be there unchanged). Final relative "
                       "density may be raised; the targets done must be "
-                      "unchanged. Empty: start afresh.");
+                      "unchanged. A damaged or foreign file is refused. "
+                      "Empty: start afresh.");
     prm.declare_entry(
       "Consolidation",
       "none",
@@ -375,12 +383,44 @@ namespace compax::cli
                    format_number(deposition.die_diameter),
                    "the die must be wider than two particle diameters (> "
                      + format_number(4 * radius) + " m)");
-    if (deposition.sizes.log_sigma > 0
-        && deposition.sizes.min_radius >= deposition.sizes.max_radius)
-      reject_entry("Packing/Minimum radius",
-                   format_number(deposition.sizes.min_radius),
-                   "must be below the Maximum radius ("
-                     + format_number(deposition.sizes.max_radius) + " m)");
+    if (deposition.sizes.log_sigma > 0)
+      {
+        const auto  &sizes = deposition.sizes;
+        const double sigma = sizes.log_sigma;
+        if (sizes.min_radius >= sizes.max_radius)
+          reject_entry("Packing/Minimum radius",
+                       format_number(sizes.min_radius),
+                       "must be below the Maximum radius ("
+                         + format_number(sizes.max_radius) + " m)");
+        // The share of log-normal draws inside the cut-offs (rejection
+        // sampling needs a reasonable one).
+        const auto cdf = [&](const double r) {
+          return r <= 0 ? 0.0
+                        : 0.5
+                            * std::erfc(-std::log(r / radius)
+                                        / (sigma * std::sqrt(2.0)));
+        };
+        const double accepted = cdf(sizes.max_radius) - cdf(sizes.min_radius);
+        if (!(accepted >= 1e-3))
+          reject_entry("Packing/Minimum radius",
+                       format_number(sizes.min_radius),
+                       "the cut-offs [" + format_number(sizes.min_radius) + ", "
+                         + format_number(sizes.max_radius)
+                         + "] m keep only a fraction " + format_number(accepted)
+                         + " of the log-normal radii around the median "
+                         + format_number(radius) + " m (Log-normal sigma = "
+                         + format_number(sigma) + "); widen them");
+        if (4.0 * sizes.largest() >= deposition.die_diameter)
+          reject_entry("Packing/Log-normal sigma",
+                       format_number(sigma),
+                       "the largest radius the packing may draw, min(Maximum "
+                       "radius, Radius exp(6 sigma)) = "
+                         + format_number(sizes.largest())
+                         + " m, must be below a quarter of the die diameter ("
+                         + format_number(deposition.die_diameter / 4)
+                         + " m): lower the sigma or set Packing/Maximum "
+                           "radius");
+      }
     prm.leave_subsection();
 
     prm.enter_subsection("Protocol");
@@ -401,18 +441,12 @@ namespace compax::cli
     protocol.eject               = prm.get_bool("Eject");
     protocol.friction_coefficient
       = prm.get_double("Die-wall friction coefficient");
-    protocol.ejection_step      = prm.get_double("Ejection step");
-    protocol.max_ejection_steps = prm.get_integer("Maximum ejection steps");
-    if (!rerun.empty() && !std::filesystem::is_regular_file(rerun))
-      reject_entry("Protocol/Rerun branch from",
-                   rerun,
-                   "no such checkpoint file");
-    protocol.consolidate         = prm.get("Consolidation") == "frozen-history";
+    protocol.ejection_step       = prm.get_double("Ejection step");
+    protocol.max_ejection_steps  = prm.get_integer("Maximum ejection steps");
+    protocol.consolidate = prm.get("Consolidation") == "frozen-history";
     protocol.checkpoint_interval = prm.get_integer("Checkpoint interval");
     protocol.stop_after      = prm.get_integer("Stop after compaction steps");
     const std::string resume = prm.get("Resume from");
-    if (!resume.empty() && !std::filesystem::is_regular_file(resume))
-      reject_entry("Protocol/Resume from", resume, "no such checkpoint file");
     if (!resume.empty() && !rerun.empty())
       reject_entry("Protocol/Resume from",
                    resume,
@@ -435,6 +469,24 @@ namespace compax::cli
         protocol.elastic = elastic;
       }
 
+    // A resumed run continues the checkpoint's compaction path: every entry
+    // but those that only say where it stops, how often it checkpoints and
+    // where it resumes from must match (the compaction targets done are
+    // compared on their own, so the final density may be raised; a run
+    // that stopped without convergence may resume with more iterations).
+    const std::string resume_parameters
+      = canonical_parameters(prm,
+                             {},
+                             {"Protocol/Final relative density",
+                              "Protocol/Compaction steps",
+                              "Protocol/Unloading points",
+                              "Protocol/Rerun branch from",
+                              "Protocol/Checkpoint interval",
+                              "Protocol/Stop after compaction steps",
+                              "Protocol/Resume from",
+                              "Solver/Maximum iterations"});
+    const std::string state_parameters = canonical_parameters(
+      prm, {"Material", "Material 2", "Bonding", "Packing", "Contact"});
     return {deposition,
             model,
             protocol,
@@ -442,6 +494,8 @@ namespace compax::cli
             final_density,
             steps,
             rerun,
-            resume};
+            resume,
+            resume_parameters,
+            state_parameters};
   }
 } // namespace compax::cli

@@ -25,6 +25,12 @@ namespace compax::cli
     /// A compaction checkpoint (checkpoints/compaction.h5) to resume an
     /// interrupted run from; empty: none.
     std::string resume_from;
+    /// The canonical text of the entries a compaction checkpoint must have
+    /// been written with to be resumed (coupling::ArchiveIdentity).
+    std::string resume_parameters;
+    /// ... and those of a saved bed state (branch checkpoints,
+    /// last_converged.h5): the particles, their materials and contacts.
+    std::string state_parameters;
   };
 
   /// Declares the subsections Material, Material 2, Bonding, Packing,

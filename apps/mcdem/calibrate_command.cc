@@ -9,9 +9,11 @@
 #include "dem/dynamics/calibration.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <tuple>
 
 namespace compax::cli
 {
@@ -38,10 +40,14 @@ namespace compax::cli
                const std::string           &stress_column,
                const std::string           &stage_column)
     {
+      const std::string entry = "Calibration/Measured curve";
+      if (std::filesystem::is_directory(file))
+        reject_entry(entry, file.string(), "is a folder, not a CSV file");
+      if (!std::filesystem::exists(file))
+        reject_entry(entry, file.string(), "no such file");
       std::ifstream in(file);
       if (!in)
-        throw InputError("measured curve '" + file.string()
-                         + "' cannot be read");
+        reject_entry(entry, file.string(), "cannot be read");
       std::string line;
       std::getline(in, line);
       const auto header = split(line);
@@ -50,8 +56,9 @@ namespace compax::cli
         if (it == header.end())
           {
             if (required)
-              throw InputError("measured curve '" + file.string()
-                               + "' has no column '" + name + "'");
+              reject_entry(entry,
+                           file.string(),
+                           "has no column '" + name + "' in its header");
             return -1;
           }
         return static_cast<int>(it - header.begin());
@@ -68,19 +75,30 @@ namespace compax::cli
           const auto cells = split(line);
           try
             {
-              curve.strain.push_back(std::stod(cells.at(e)));
-              curve.stress.push_back(std::stod(cells.at(s)));
-              curve.stage.push_back(g >= 0 ? std::stoi(cells.at(g)) : 1);
+              std::size_t  used   = 0;
+              const double strain = std::stod(cells.at(e), &used);
+              if (used != cells.at(e).size() || !std::isfinite(strain))
+                throw std::invalid_argument("strain");
+              const double stress = std::stod(cells.at(s), &used);
+              if (used != cells.at(s).size() || !std::isfinite(stress))
+                throw std::invalid_argument("stress");
+              const int stage = g >= 0 ? std::stoi(cells.at(g)) : 1;
+              if (stage != 1 && stage != 2)
+                throw std::invalid_argument("stage");
+              curve.strain.push_back(strain);
+              curve.stress.push_back(stress);
+              curve.stage.push_back(stage);
             }
           catch (const std::exception &)
             {
-              throw InputError("measured curve '" + file.string() + "' line "
-                               + std::to_string(row) + ": not a number");
+              reject_entry(entry,
+                           file.string(),
+                           "line " + std::to_string(row)
+                             + ": expected finite numbers (stage 1 or 2)");
             }
         }
       if (curve.strain.size() < 3)
-        throw InputError("measured curve '" + file.string()
-                         + "' has fewer than 3 points");
+        reject_entry(entry, file.string(), "has fewer than 3 points");
       return curve;
     }
 
@@ -213,6 +231,14 @@ namespace compax::cli
       {
         get_mcdem_setup(prm);
         spec(prm);
+        prm.enter_subsection("Calibration");
+        const std::string file          = prm.get("Measured curve");
+        const std::string strain_column = prm.get("Strain column"),
+                          stress_column = prm.get("Stress column"),
+                          stage_column  = prm.get("Stage column");
+        prm.leave_subsection();
+        if (!file.empty())
+          read_curve(file, strain_column, stress_column, stage_column);
       }
 
       int
@@ -363,14 +389,27 @@ namespace compax::cli
         s.target_r2               = prm.get_double("Target R2");
         s.max_simulations         = prm.get_integer("Maximum simulations");
         const std::string initial = prm.get("Initial values");
+        const std::string lower   = prm.get("Lower bounds");
+        const std::string upper   = prm.get("Upper bounds");
         prm.leave_subsection();
         const std::size_t n = s.parameters.size();
-        if (s.initial.size() != n || s.lower.size() != n || s.upper.size() != n)
-          reject_entry("Calibration/Initial values",
-                       initial,
-                       "give one initial value, lower and upper bound per "
-                       "fitted parameter ("
-                         + std::to_string(n) + ")");
+        for (const auto &[name, text, values] :
+             {std::tuple{"Initial values", &initial, &s.initial},
+              std::tuple{"Lower bounds", &lower, &s.lower},
+              std::tuple{"Upper bounds", &upper, &s.upper}})
+          if (values->size() != n)
+            reject_entry(std::string("Calibration/") + name,
+                         *text,
+                         "give one value per fitted parameter ("
+                           + std::to_string(n) + ")");
+        for (std::size_t d = 0; d < n; ++d)
+          if (!(s.lower[d] < s.upper[d]))
+            reject_entry("Calibration/Lower bounds",
+                         lower,
+                         "the lower bound of " + s.parameters[d] + " ("
+                           + format_number(s.lower[d])
+                           + ") must be below its upper bound ("
+                           + format_number(s.upper[d]) + ")");
         for (std::size_t d = 0; d < n; ++d)
           {
             if (!(s.lower[d] <= s.initial[d] && s.initial[d] <= s.upper[d]))

@@ -119,8 +119,12 @@ namespace compax::cli
                                      "peak_stress",
                                      "stress_at_half_peak_strain",
                                      "residual_strain",
-                                     "steps",
-                                     "wall_seconds"});
+                                     "steps"});
+        std::unique_ptr<CsvWriter> timing;
+        if (n_sizes > 1)
+          timing = std::make_unique<CsvWriter>(
+            folder / "timing.csv",
+            std::vector<std::string>{"cell_size", "wall_seconds"});
         for (std::size_t k = 0; k < n_sizes; ++k)
           {
             dem::RveSpec rve = setup.rve;
@@ -167,9 +171,10 @@ namespace compax::cli
                 *study << L << static_cast<long long>(summary.particles)
                        << summary.initial_density << summary.peak_strain
                        << summary.peak_stress << half << summary.residual_strain
-                       << static_cast<long long>(summary.steps)
-                       << summary.wall_seconds;
+                       << static_cast<long long>(summary.steps);
                 study->end_row();
+                *timing << L << summary.wall_seconds;
+                timing->end_row();
               }
           }
         csv.close();

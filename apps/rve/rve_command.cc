@@ -69,9 +69,9 @@ namespace compax::cli
                                        "seed",
                                        "cell_edge_over_mean_diameter"};
       columns.insert(columns.end(), quantities.begin(), quantities.end());
-      columns.push_back("seconds");
       std::vector<std::vector<double>> table;
-      int                              code = success;
+      CsvWriter timing(folder / "timing.csv", {"particle_count", "seconds"});
+      int       code = success;
       for (std::size_t k = 0; k < study.cell_sizes.size() && code == success;
            ++k)
         {
@@ -114,8 +114,10 @@ namespace compax::cli
                            m_loaded[moduli_column("E")],
                            m_loaded[moduli_column("nu")],
                            m_end[moduli_column("E")],
-                           m_end[moduli_column("nu")],
-                           o.timings.total});
+                           m_end[moduli_column("nu")]});
+          timing << static_cast<long long>(spec.particle_count)
+                 << o.timings.total;
+          timing.end_row();
         }
 
       {
@@ -200,7 +202,8 @@ namespace compax::cli
                "the unloading-branch tangent.\n\nWrites rve.csv (per step: "
                "logarithmic strain of F, Love-Weber stress in Pa, tension "
                "positive, relative density, coordination number, bonding "
-               "surface, bonds, solver iterations), moduli.csv (isotropic E "
+               "surface, bonds, solver iterations; the time of each step "
+               "and tangent goes to timing.csv), moduli.csv (isotropic E "
                "and nu and the transversely isotropic constants of the "
                "unloading-branch condensed tangent; C11 C33 C12 C13 C44 of "
                "the condensed and affine tangents; tangent_fd_error where "
@@ -230,7 +233,12 @@ namespace compax::cli
       void
       check_parameters(dealii::ParameterHandler &prm) const override
       {
-        get_rve_study(prm);
+        const RveStudy study = get_rve_study(prm);
+        if (!study.resume_from.empty())
+          {
+            dem::PeriodicBed bed;
+            read_rve_checkpoint(study.resume_from, study, bed);
+          }
       }
 
       int

@@ -439,10 +439,16 @@ namespace compax::cli
                       "",
                       dealii::Patterns::Anything(),
                       "A checkpoints/rve.h5 (relative to the .prm) of an "
-                      "earlier run with the same "
-                      "parameters: continue its path where the checkpoint "
+                      "earlier run with the same parameters (all but "
+                      "Checkpoints, Size study and Solver/Maximum "
+                      "iterations; the strain increments file by its "
+                      "content): continue its path where the checkpoint "
                       "was taken (rve.csv and moduli.csv get the earlier "
-                      "rows too). Empty: start afresh.");
+                      "rows too; its snapshots are copied from the "
+                      "checkpoint's run folder and must be there "
+                      "unchanged). A damaged or foreign file, or one of "
+                      "other parameters (named), is refused. Empty: start "
+                      "afresh.");
     prm.leave_subsection();
 
     declare_rve_solver_parameters(prm);
@@ -630,11 +636,11 @@ namespace compax::cli
     if (!s.resume_from.empty())
       s.resume_from = resolve_input_path(s.resume_from).string();
     prm.leave_subsection();
-    if (!s.resume_from.empty()
-        && !std::filesystem::is_regular_file(s.resume_from))
-      reject_entry("Checkpoints/Resume from",
-                   s.resume_from,
-                   "no such checkpoint file");
+    s.resume_parameters = canonical_parameters(
+      prm,
+      {},
+      {"Checkpoints", "Size study", "Solver/Maximum iterations"},
+      {"Strain path/Strain increments file"});
     if (!s.cell_sizes.empty() && (!s.resume_from.empty() || s.stop_after > 0))
       reject_entry("Size study/Cell sizes",
                    cell_sizes,

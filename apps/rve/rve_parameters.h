@@ -78,6 +78,10 @@ namespace compax::cli
     int         checkpoint_interval = 0;
     int         stop_after          = 0;
     std::string resume_from;
+    /// The canonical text of the entries a checkpoint must have been
+    /// written with to be resumed (all but Checkpoints and Size study; the
+    /// strain increments file by its content).
+    std::string resume_parameters;
   };
 
   /// A periodic cell to generate: its contact model and packing.

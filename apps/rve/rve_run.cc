@@ -1,5 +1,6 @@
 #include "apps/rve/rve_run.h"
 
+#include "apps/cli/archive_entry.h"
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
@@ -25,8 +26,7 @@ namespace compax::cli
 {
   namespace
   {
-    constexpr double      nan = std::numeric_limits<double>::quiet_NaN();
-    constexpr const char *checkpoint_format = "compax rve checkpoint 1";
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
     using Clock = std::chrono::steady_clock;
 
@@ -151,6 +151,12 @@ namespace compax::cli
     }
 
     std::string
+    snapshot_name(const int step)
+    {
+      return "snapshots/rve-" + std::to_string(step) + ".vtu";
+    }
+
+    std::string
     fixed(double value, int digits)
     {
       std::ostringstream s;
@@ -189,8 +195,7 @@ namespace compax::cli
                                                 "substeps",
                                                 "cutbacks",
                                                 "iterations",
-                                                "residual",
-                                                "step_seconds"};
+                                                "residual"};
     return names;
   }
 
@@ -219,8 +224,7 @@ namespace compax::cli
                                                 "C12_affine",
                                                 "C13_affine",
                                                 "C44_affine",
-                                                "tangent_fd_error",
-                                                "tangent_seconds"};
+                                                "tangent_fd_error"};
     return names;
   }
 
@@ -236,6 +240,16 @@ namespace compax::cli
     return index_of(moduli_columns(), name);
   }
 
+  const std::vector<std::string> &
+  timing_columns()
+  {
+    static const std::vector<std::string> names{"step",
+                                                "stage",
+                                                "step_seconds",
+                                                "tangent_seconds"};
+    return names;
+  }
+
   void
   write_rve_checkpoint(const std::filesystem::path &file,
                        const RveStudy              &study,
@@ -243,12 +257,9 @@ namespace compax::cli
                        const RveProgress           &p)
   {
     std::filesystem::create_directories(file.parent_path());
-    coupling::Hdf5ArchiveWriter archive(file.string());
-    archive.write_attribute("format", checkpoint_format);
-    archive.write_attribute("path", double(static_cast<int>(study.path)));
-    archive.write_attribute("loading_steps", double(study.steps));
-    archive.write_attribute("target_density", study.target_density);
-    archive.write_attribute("unloading_step", study.unloading_step);
+    coupling::Hdf5ArchiveWriter archive(file.string(),
+                                        {coupling::archive_kind::rve,
+                                         study.resume_parameters});
     coupling::save_rve(archive, "rve", bed);
     archive.write_array("rows",
                         flatten(p.rows, rve_columns().size()),
@@ -259,6 +270,14 @@ namespace compax::cli
     archive.write_array("snapshots",
                         std::vector<double>(p.snapshots.begin(),
                                             p.snapshots.end()));
+    // The snapshots so far, by content: a resumed run takes them over.
+    std::string hashes;
+    for (const int s : p.snapshots)
+      hashes
+        += coupling::file_hash(
+             (file.parent_path().parent_path() / snapshot_name(s)).string())
+           + "\n";
+    archive.write_text("snapshot_hashes", hashes);
     std::vector<double> F(9);
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c)
@@ -274,64 +293,57 @@ namespace compax::cli
   {
     const std::string entry = "Checkpoints/Resume from";
     RveProgress       p;
-    // Nothing may throw through the open HDF5 file (deal.II aborts then):
-    // the first problem is kept and reported once the file is closed.
-    std::string mismatch, error;
-    try
+    read_archive_entry(entry, file, coupling::archive_kind::rve, [&] {
+      const coupling::Hdf5ArchiveReader archive(file,
+                                                coupling::archive_kind::rve,
+                                                study.resume_parameters);
+      bed    = coupling::load_rve(archive, "rve", study.model);
+      p.rows = unflatten(archive.read_array("rows"), rve_columns().size());
+      p.moduli
+        = unflatten(archive.read_array("moduli"), moduli_columns().size());
+      for (const double s : archive.read_array("snapshots"))
+        {
+          if (!(s >= 0 && s <= 1e9))
+            throw std::runtime_error("malformed snapshot list");
+          p.snapshots.push_back(static_cast<int>(s));
+        }
+      std::istringstream hashes(archive.read_text("snapshot_hashes"));
+      for (std::string h; std::getline(hashes, h);)
+        p.snapshot_hashes.push_back(h);
+      if (p.snapshot_hashes.size() != p.snapshots.size())
+        throw std::runtime_error("malformed snapshot list");
+      const auto F = archive.read_array("loaded_deformation");
+      if (F.size() != 9)
+        throw std::runtime_error("malformed loaded deformation");
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          p.loaded_deformation(r, c) = F[3 * r + c];
+      if (p.rows.empty())
+        throw std::runtime_error("no rows");
+      for (const auto &row : p.rows)
+        if (!(row[rve_column("step")] >= 0 && row[rve_column("step")] <= 1e9))
+          throw std::runtime_error("malformed rows");
+    });
+    // The snapshots of the earlier part, next to the checkpoint.
+    const auto old_folder
+      = std::filesystem::absolute(file).parent_path().parent_path();
+    for (std::size_t k = 0; k < p.snapshots.size(); ++k)
       {
-        const coupling::Hdf5ArchiveReader archive(file);
-        try
-          {
-            if (!archive.has_attribute("format")
-                || archive.read_text_attribute("format") != checkpoint_format)
-              error = "no '" + std::string(checkpoint_format) + "' tag";
-            else if (archive.read_attribute("path")
-                     != static_cast<int>(study.path))
-              mismatch = "Strain path/Path";
-            else if (archive.read_attribute("loading_steps") != study.steps)
-              mismatch = "Strain path/Loading steps";
-            else if (study.path != RvePath::csv
-                     && archive.read_attribute("target_density")
-                          != study.target_density)
-              mismatch = "Strain path/Target relative density";
-            else if (archive.read_attribute("unloading_step")
-                     != study.unloading_step)
-              mismatch = "Strain path/Unloading strain step";
-            else
-              {
-                bed = coupling::load_rve(archive, "rve", study.model);
-                p.rows
-                  = unflatten(archive.read_array("rows"), rve_columns().size());
-                p.moduli = archive.array_shape("moduli").at(0) == 0
-                             ? std::vector<std::vector<double>>{}
-                             : unflatten(archive.read_array("moduli"),
-                                         moduli_columns().size());
-                for (const double s : archive.read_array("snapshots"))
-                  p.snapshots.push_back(static_cast<int>(s));
-                const auto F = archive.read_array("loaded_deformation");
-                for (int r = 0; r < 3; ++r)
-                  for (int c = 0; c < 3; ++c)
-                    p.loaded_deformation(r, c) = F.at(3 * r + c);
-                if (p.rows.empty())
-                  error = "no rows";
-              }
-          }
-        catch (const std::exception &e)
-          {
-            error = e.what();
-          }
+        const auto from = old_folder / snapshot_name(p.snapshots[k]);
+        if (!std::filesystem::is_regular_file(from))
+          reject_entry(entry,
+                       file,
+                       "the earlier snapshot '" + snapshot_name(p.snapshots[k])
+                         + "' is not next to the checkpoint (in '"
+                         + old_folder.string()
+                         + "'); resume from the checkpoint in its run folder");
+        if (coupling::file_hash(from.string()) != p.snapshot_hashes[k])
+          reject_entry(entry,
+                       file,
+                       "the earlier snapshot '" + from.string()
+                         + "' differs from the one the checkpoint lists "
+                           "(changed since)");
       }
-    catch (const std::exception &e)
-      {
-        error = e.what();
-      }
-    if (!mismatch.empty())
-      reject_entry(entry,
-                   file,
-                   "the checkpoint was written with another " + mismatch
-                     + "; resume with the parameters of that run");
-    if (!error.empty())
-      reject_entry(entry, file, "not a compax rve checkpoint (" + error + ")");
     return p;
   }
 
@@ -419,8 +431,9 @@ namespace compax::cli
       set("cutbacks", r ? r->cutbacks : 0);
       set("iterations", r ? r->iterations : 0);
       set("residual", r ? r->relative_residual : 0.0);
-      set("step_seconds", step_seconds);
       progress.rows.push_back(row);
+      progress.timing.push_back(
+        {double(step), unloading ? 1.0 : 0.0, step_seconds, nan});
     };
 
     // Tangents and moduli at the current state (jammed cells only: a loose
@@ -473,7 +486,8 @@ namespace compax::cli
           set(names[k], c[k]);
           row[moduli_column(std::string(names[k]) + "_affine")] = a[k];
         }
-      set("tangent_seconds", seconds);
+      if (!progress.timing.empty() && progress.timing.back()[0] == step)
+        progress.timing.back()[3] = seconds;
       if (check)
         {
           // At a trial state half a step further along the path,
@@ -516,17 +530,20 @@ namespace compax::cli
     const auto write_tables = [&] {
       write_table(folder / "rve.csv", rve_columns(), progress.rows);
       write_table(folder / "moduli.csv", moduli_columns(), progress.moduli);
+      write_table(folder / "timing.csv", timing_columns(), progress.timing);
     };
 
-    const auto snapshot = [&](int step) {
-      std::filesystem::create_directories(snapshot_folder);
-      write_rve_vtu(snapshot_folder / ("rve-" + std::to_string(step) + ".vtu"),
-                    bed);
-      progress.snapshots.push_back(step);
+    const auto write_snapshot_list = [&] {
       std::vector<std::pair<double, std::string>> list;
       for (const int s : progress.snapshots)
-        list.emplace_back(s, "snapshots/rve-" + std::to_string(s) + ".vtu");
+        list.emplace_back(s, snapshot_name(s));
       dem::write_pvd(folder / "snapshots.pvd", list);
+    };
+    const auto snapshot = [&](int step) {
+      std::filesystem::create_directories(snapshot_folder);
+      write_rve_vtu(folder / snapshot_name(step), bed);
+      progress.snapshots.push_back(step);
+      write_snapshot_list();
     };
 
     int loading_done = 0, unloading_done = 0;
@@ -536,26 +553,24 @@ namespace compax::cli
         for (const auto &row : progress.rows)
           if (row[rve_column("step")] > 0)
             (row[c_stage] == 0.0 ? loading_done : unloading_done) += 1;
-        // Snapshots of the earlier part, from the checkpoint's run folder.
+        // Snapshots of the earlier part, from the checkpoint's run folder
+        // (read_rve_checkpoint() checked that they are there).
         const auto old_folder = std::filesystem::absolute(study.resume_from)
                                   .parent_path()
                                   .parent_path();
         std::vector<int> kept;
         for (const int s : progress.snapshots)
           {
-            const auto name = "rve-" + std::to_string(s) + ".vtu";
-            if (std::filesystem::is_regular_file(old_folder / "snapshots"
-                                                 / name))
-              {
-                std::filesystem::create_directories(snapshot_folder);
-                std::filesystem::copy_file(
-                  old_folder / "snapshots" / name,
-                  snapshot_folder / name,
-                  std::filesystem::copy_options::overwrite_existing);
-                kept.push_back(s);
-              }
+            std::filesystem::create_directories(snapshot_folder);
+            std::filesystem::copy_file(
+              old_folder / snapshot_name(s),
+              folder / snapshot_name(s),
+              std::filesystem::copy_options::overwrite_existing);
+            kept.push_back(s);
           }
         progress.snapshots = kept;
+        if (!progress.snapshots.empty())
+          write_snapshot_list();
         std::cout << "Resuming from " << study.resume_from << " at step "
                   << progress.rows.size() - 1 << " (relative density "
                   << bed.relative_density() << ")" << std::endl;
@@ -647,7 +662,9 @@ namespace compax::cli
       std::cerr << "compax rve: " << why
                 << "; the converged steps are kept in rve.csv and the last "
                    "converged state in last_converged.h5\n";
-      coupling::save_rve((folder / "last_converged.h5").string(), bed);
+      coupling::save_rve((folder / "last_converged.h5").string(),
+                         bed,
+                         study.resume_parameters);
       out.code = not_converged;
     };
 
@@ -735,6 +752,10 @@ namespace compax::cli
       {
         fail(e.what());
       }
+    // The final state as a checkpoint too: a resumed run's output holds
+    // what the uninterrupted run's does.
+    if (study.checkpoint_interval > 0 && out.code == success && !out.stopped)
+      write_rve_checkpoint(checkpoint, study, bed, progress);
 
     write_tables();
     plot(folder, !study.elastic);

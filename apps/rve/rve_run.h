@@ -18,6 +18,12 @@ namespace compax::cli
   const std::vector<std::string> &
   moduli_columns();
 
+  /// Columns of timing.csv: per row of rve.csv computed by this run, the
+  /// seconds of its step and of its tangents (kept out of rve.csv and
+  /// moduli.csv, so that two runs of one study give the same files).
+  const std::vector<std::string> &
+  timing_columns();
+
   /// Index of a column in rve_columns() / moduli_columns().
   std::size_t
   rve_column(const std::string &name);
@@ -32,6 +38,10 @@ namespace compax::cli
     std::vector<std::vector<double>> moduli;
     /// Steps with a VTU snapshot.
     std::vector<int> snapshots;
+    /// Their hashes (coupling::file_hash), as a checkpoint lists them.
+    std::vector<std::string> snapshot_hashes;
+    /// Rows of timing.csv (not in checkpoints).
+    std::vector<std::vector<double>> timing;
     /// F at the end of loading (unloading starts from it).
     Eigen::Matrix3d loaded_deformation = Eigen::Matrix3d::Identity();
   };
@@ -76,8 +86,9 @@ namespace compax::cli
                        const dem::PeriodicBed      &bed,
                        const RveProgress           &progress);
 
-  /// Reads a checkpoint; throws InputError naming Checkpoints/Resume from
-  /// if it is not one, or if it was written for another path.
+  /// Reads a checkpoint and checks that the earlier snapshots are next to
+  /// it; throws InputError naming Checkpoints/Resume from if it is not an
+  /// intact RVE checkpoint written with the study's resume_parameters.
   RveProgress
   read_rve_checkpoint(const std::string &file,
                       const RveStudy    &study,

@@ -60,6 +60,8 @@ namespace compax::cli
                            const unsigned int           compaction_axis,
                            const unsigned int           points_per_cell)
   {
+    // What the database and the RVE states depend on.
+    const std::string parameters = canonical_parameters(prm, {"Multiscale"});
     prm.enter_subsection("Multiscale");
     const DatabaseStudy       study = get_database_study(prm, "Multiscale/");
     coupling::RveMaterialSpec fe2;
@@ -70,6 +72,7 @@ namespace compax::cli
     fe2.compaction_axis       = compaction_axis;
     fe2.points_per_cell       = points_per_cell;
     fe2.stress_resolution     = prm.get_double("FE2 stress resolution");
+    fe2.checkpoint_parameters = parameters;
     prm.leave_subsection();
 
     if (model == "multiscale-fe2")
@@ -88,7 +91,7 @@ namespace compax::cli
     const std::filesystem::path out = folder / "database";
     std::filesystem::create_directories(out);
     write_database_rows(out, db);
-    write_database_archive(out, db);
+    write_database_archive(out, db, parameters);
     std::vector<std::string> notes;
     const auto rows = coupling::fit_drucker_prager_cap(db, &notes);
     for (const std::string &n : notes)

@@ -1,11 +1,14 @@
 #include "apps/tablet/tablet_command.h"
 
 #include "apps/tablet/multiscale_material.h"
+#include "apps/tablet/tablet_checkpoint.h"
 
+#include "apps/cli/archive_entry.h"
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
+#include "coupling/hdf5_archive.h"
 #include "coupling/rve_material.h"
 #include "fem/drucker_prager_cap.h"
 #include "fem/linear_elastic_material.h"
@@ -54,6 +57,9 @@ namespace compax::cli
       bool                                      write_hdf5          = true;
       unsigned int                              checkpoint_interval = 25;
       std::string                               resume_from;
+      /// The canonical text of the entries a checkpoint must have been
+      /// written with to be resumed.
+      std::string resume_parameters;
       /// multiscale-database or multiscale-fe2 (the material is built in
       /// run(), not at --check); empty otherwise.
       std::string multiscale_model;
@@ -349,10 +355,16 @@ namespace compax::cli
                         "",
                         dealii::Patterns::Anything(),
                         "Output folder of an earlier run with the same "
-                        "parameters and number of MPI ranks: continue its "
-                        "cycle from its checkpoint (its rows and fields are "
-                        "copied into the new output). Empty: start afresh. "
-                        "Unit: folder path.");
+                        "parameters (all but Checkpoint interval and the "
+                        "Solver's Max iterations, Max step cuts, Linear "
+                        "solver and Print Newton residuals; mesh and DPC "
+                        "table files by their content) and number of MPI "
+                        "ranks: continue its cycle from its checkpoint "
+                        "(checkpoint/tablet.h5, which lists the solver "
+                        "states with their hashes; its rows and fields are "
+                        "copied into the new output). A damaged or foreign "
+                        "checkpoint, or one of other parameters (named), is "
+                        "refused. Empty: start afresh. Unit: folder path.");
       prm.leave_subsection();
 
       declare_multiscale_parameters(prm);
@@ -375,6 +387,13 @@ namespace compax::cli
       for (const auto &candidate : candidates)
         if (fs::is_regular_file(candidate))
           return fs::absolute(candidate).lexically_normal();
+      for (const auto &candidate : candidates)
+        if (fs::is_directory(candidate))
+          reject_entry("Geometry/Mesh file",
+                       entry,
+                       "is a folder ("
+                         + fs::absolute(candidate).lexically_normal().string()
+                         + "), not a Gmsh .msh file");
       std::string where = "no such file";
       if (path.is_relative())
         {
@@ -383,7 +402,38 @@ namespace compax::cli
             where += " or beside the parameter file, in "
                      + fs::absolute(candidates[1].parent_path()).string();
         }
-      reject_entry("Mesh file", entry, where);
+      reject_entry("Geometry/Mesh file", entry, where);
+    }
+
+    /**
+     * The checkpoint of Output/Resume from, read and checked (with the
+     * number of MPI ranks it must have been written by, if known); throws
+     * InputError naming the entry.
+     */
+    TabletCheckpoint
+    read_resume_checkpoint(const TabletSetup                &s,
+                           const std::optional<unsigned int> ranks)
+    {
+      const std::string           entry = "Output/Resume from";
+      const std::filesystem::path old(s.resume_from);
+      if (!std::filesystem::is_directory(old))
+        reject_entry(entry,
+                     s.resume_from,
+                     std::filesystem::exists(old)
+                       ? "is not a folder (give the output folder of the "
+                         "earlier run)"
+                       : "no such folder");
+      if (!std::filesystem::is_directory(old / "checkpoint"))
+        reject_entry(entry,
+                     s.resume_from,
+                     "has no checkpoint folder (run with Checkpoint interval "
+                     "> 0)");
+      return read_archive_entry(
+        entry, s.resume_from, coupling::archive_kind::tablet, [&] {
+          return read_tablet_checkpoint(old / "checkpoint",
+                                        s.resume_parameters,
+                                        ranks);
+        });
     }
 
     TabletSetup
@@ -430,7 +480,7 @@ namespace compax::cli
             }
           catch (const std::exception &e)
             {
-              reject_entry("Mesh file",
+              reject_entry("Geometry/Mesh file",
                            mesh_entry,
                            std::string(e.what())
                              + (s.three_d ? " (Mesh/Model = quarter-3d)"
@@ -476,7 +526,7 @@ namespace compax::cli
           catch (const std::exception &e)
             {
               prm.leave_subsection();
-              reject_entry("DPC table", file, e.what());
+              reject_entry("Material/DPC table", file, e.what());
             }
         }
       prm.leave_subsection();
@@ -550,16 +600,6 @@ namespace compax::cli
       s.write_hdf5          = prm.get_bool("Write HDF5");
       s.checkpoint_interval = prm.get_integer("Checkpoint interval");
       s.resume_from         = prm.get("Resume from");
-      if (!s.resume_from.empty()
-          && !std::filesystem::is_directory(std::filesystem::path(s.resume_from)
-                                            / "checkpoint"))
-        {
-          prm.leave_subsection();
-          reject_entry("Resume from",
-                       s.resume_from,
-                       "has no checkpoint folder (run with Checkpoint "
-                       "interval > 0)");
-        }
       prm.leave_subsection();
 
       if (s.process.ejection_steps > 0 && s.process.unloading_steps == 0)
@@ -572,6 +612,22 @@ namespace compax::cli
                      std::to_string(s.process.compaction_displacement),
                      "must be smaller than the fill height "
                        + std::to_string(s.solver.geometry.fill_height) + " m");
+      // A resumed run continues the same cycle: every entry but where it
+      // resumes from, how often it checkpoints, how hard the solver tries
+      // (a run that stopped without convergence is resumed with more
+      // iterations or cuts) and how much it prints; files by their content.
+      s.resume_parameters
+        = canonical_parameters(prm,
+                               {},
+                               {"Output/Resume from",
+                                "Output/Checkpoint interval",
+                                "Solver/Max iterations",
+                                "Solver/Max step cuts",
+                                "Solver/Linear solver",
+                                "Solver/Print Newton residuals"},
+                               {"Geometry/Mesh file", "Material/DPC table"});
+      if (!s.resume_from.empty())
+        read_resume_checkpoint(s, std::nullopt);
       return s;
     }
 
@@ -618,22 +674,6 @@ namespace compax::cli
           << "pool consolidated at start-up in "
           << dealii::Utilities::MPI::max(c.pool_seconds, comm) << " s\n";
       return out.str();
-    }
-
-    constexpr std::uint64_t steps_magic = 0x636f6d7061785331; // compaxS1
-
-    /// The process settings a checkpoint was made with, to refuse resuming
-    /// another cycle.
-    bool
-    same_process(const fem::TabletProcess &a, const fem::TabletProcess &b)
-    {
-      return a.compaction_displacement == b.compaction_displacement
-             && a.unloading_displacement == b.unloading_displacement
-             && a.ejection_displacement == b.ejection_displacement
-             && a.compaction_steps == b.compaction_steps
-             && a.unloading_steps == b.unloading_steps
-             && a.ejection_steps == b.ejection_steps
-             && a.punch_speed == b.punch_speed;
     }
 
     template <int dim>
@@ -771,27 +811,31 @@ namespace compax::cli
       auto checkpoint = [&]() {
         const fs::path fresh = folder / "checkpoint.new";
         if (root)
-          fs::create_directories(fresh);
+          {
+            fs::remove_all(fresh);
+            fs::create_directories(fresh);
+          }
         MPI_Barrier(comm);
         solver.save_state(fresh);
+        MPI_Barrier(comm);
         if (root)
           {
-            std::ofstream       out(fresh / "steps.bin", std::ios::binary);
-            const std::uint64_t n = history.size();
-            out.write(reinterpret_cast<const char *>(&steps_magic),
-                      sizeof(steps_magic));
-            out.write(reinterpret_cast<const char *>(&setup.process),
-                      sizeof(setup.process));
-            out.write(reinterpret_cast<const char *>(&n), sizeof(n));
-            out.write(reinterpret_cast<const char *>(history.data()),
-                      n * sizeof(fem::TabletStep));
-            std::ofstream fields(fresh / "fields.txt");
+            TabletCheckpoint c;
+            c.steps = history;
+            std::ostringstream fields;
             fields << std::setprecision(17);
             for (const auto &[time, name] : pvd)
               fields << time << ' ' << name << '\n';
-            std::ofstream                 entries(fresh / "xdmf.txt");
+            c.fields = fields.str();
+            std::ostringstream            entries;
             boost::archive::text_oarchive archive(entries);
             archive << xdmf;
+            c.xdmf = entries.str();
+            write_tablet_checkpoint(fresh,
+                                    setup.resume_parameters,
+                                    dealii::Utilities::MPI::n_mpi_processes(
+                                      comm),
+                                    c);
           }
         MPI_Barrier(comm);
         if (root)
@@ -808,68 +852,85 @@ namespace compax::cli
           const fs::path               old = fs::path(setup.resume_from);
           std::vector<fem::TabletStep> done;
           std::string                  error;
+          TabletCheckpoint             saved;
           if (root)
             {
-              std::ifstream      in(old / "checkpoint" / "steps.bin",
-                               std::ios::binary);
-              std::uint64_t      magic = 0, n = 0;
-              fem::TabletProcess p;
-              in.read(reinterpret_cast<char *>(&magic), sizeof(magic));
-              in.read(reinterpret_cast<char *>(&p), sizeof(p));
-              in.read(reinterpret_cast<char *>(&n), sizeof(n));
-              if (!in || magic != steps_magic || n == 0 || n > n_steps + 1)
-                error = "its checkpoint is unreadable";
-              else if (!same_process(p, setup.process))
-                error = "its checkpoint is of another punch cycle (Process "
-                        "parameters differ)";
-              else
+              try
                 {
-                  done.resize(n);
-                  in.read(reinterpret_cast<char *>(done.data()),
-                          n * sizeof(fem::TabletStep));
-                  if (!in)
-                    error = "its checkpoint is truncated";
+                  saved = read_resume_checkpoint(
+                    setup, dealii::Utilities::MPI::n_mpi_processes(comm));
+                  done = saved.steps;
+                  if (done.size() > n_steps + 1)
+                    reject_entry("Output/Resume from",
+                                 setup.resume_from,
+                                 "its checkpoint has more steps than this "
+                                 "cycle");
+                }
+              catch (const InputError &e)
+                {
+                  error = e.what();
                 }
             }
           error = dealii::Utilities::MPI::broadcast(comm, error, 0);
           if (!error.empty())
-            throw InputError("entry 'Resume from' = " + setup.resume_from + ": "
-                             + error);
+            throw InputError(error);
           try
             {
               solver.load_state(old / "checkpoint");
+              error.clear();
             }
           catch (const std::exception &e)
             {
-              throw InputError("entry 'Resume from' = " + setup.resume_from
-                               + ": " + e.what());
+              error = e.what();
             }
+          // Every rank must agree (a rank that failed would leave the others
+          // waiting).
+          {
+            std::string all = error;
+            for (unsigned int r = 0;
+                 r < dealii::Utilities::MPI::n_mpi_processes(comm);
+                 ++r)
+              {
+                const std::string e
+                  = dealii::Utilities::MPI::broadcast(comm, error, r);
+                if (all.empty() && !e.empty())
+                  all = e;
+              }
+            if (!all.empty())
+              reject_entry("Output/Resume from", setup.resume_from, all);
+          }
           // A checkpoint of the initial state only: start afresh.
           if (done.size() == 1)
             done.clear();
           unsigned int written = 0;
           if (root && !done.empty())
             {
-              std::ifstream fields(old / "checkpoint" / "fields.txt");
-              double        time;
-              std::string   name;
+              std::istringstream fields(saved.fields);
+              double             time;
+              std::string        name;
               while (fields >> time >> name)
                 {
                   pvd.emplace_back(time, name);
                   // tablet_NNNN.pvtu and its pieces tablet_NNNN.<rank>.vtu
                   const std::string stem = name.substr(0, name.find('.'));
-                  written = std::stoul(stem.substr(stem.find('_') + 1));
+                  written    = std::stoul(stem.substr(stem.find('_') + 1));
+                  bool found = false;
                   for (const auto &e : fs::directory_iterator(old))
                     if (e.path().filename().string().rfind(stem + ".", 0) == 0)
-                      fs::copy_file(e.path(),
-                                    folder / e.path().filename(),
-                                    fs::copy_options::overwrite_existing);
+                      {
+                        fs::copy_file(e.path(),
+                                      folder / e.path().filename(),
+                                      fs::copy_options::overwrite_existing);
+                        found = true;
+                      }
+                  if (!found)
+                    error = "the field output " + name
+                            + " of its checkpoint is missing in it";
                 }
               write_pvd();
-              if (setup.write_hdf5
-                  && fs::is_regular_file(old / "checkpoint" / "xdmf.txt"))
+              if (setup.write_hdf5 && !saved.xdmf.empty())
                 {
-                  std::ifstream entries(old / "checkpoint" / "xdmf.txt");
+                  std::istringstream            entries(saved.xdmf);
                   boost::archive::text_iarchive archive(entries);
                   archive >> xdmf;
                   fem::write_xdmf_record<dim>(xdmf,
@@ -879,6 +940,9 @@ namespace compax::cli
               std::cout << "Resuming after step " << done.back().index
                         << " from " << setup.resume_from << '\n';
             }
+          error = dealii::Utilities::MPI::broadcast(comm, error, 0);
+          if (!error.empty())
+            reject_entry("Output/Resume from", setup.resume_from, error);
           // Every rank replays the steps: the field output decisions that
           // follow are collective.
           std::uint64_t n_done = done.size();

@@ -645,7 +645,7 @@ namespace compax::dem
            "die_wall_pressure,coordination_number,bonding_surface,bonds,"
            "bonds_formed,bonds_broken,elastic_recovery_rho,"
            "elastic_recovery_H,residual_radial_pressure,ejection_pressure,"
-           "residual,iterations,cg_iterations,cutbacks,wall_seconds\n";
+           "residual,iterations,cg_iterations,cutbacks\n";
   }
 
   void
@@ -662,8 +662,7 @@ namespace compax::dem
         << r.bonds_broken << ',' << r.elastic_recovery_rho << ','
         << r.elastic_recovery_H << ',' << r.residual_radial_pressure << ','
         << r.ejection_pressure << ',' << r.residual << ',' << r.iterations
-        << ',' << r.cg_iterations << ',' << r.cutbacks << ',' << r.wall_seconds
-        << '\n';
+        << ',' << r.cg_iterations << ',' << r.cutbacks << '\n';
     out.precision(old);
   }
 } // namespace compax::dem

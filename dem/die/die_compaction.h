@@ -115,7 +115,10 @@ namespace compax::dem
     int    iterations         = 0;
     int    cg_iterations      = 0;
     int    cutbacks           = 0;
-    double wall_seconds       = 0.0;
+    /// Wall time since the run (or its resumption) started [s]: not in
+    /// die.csv (two runs of one study give the same file), the app writes
+    /// it to timing.csv.
+    double wall_seconds = 0.0;
   };
 
   /// The outcome of one unloading branch (and its ejection).
@@ -316,7 +319,7 @@ namespace compax::dem
       return path;
     }
 
-    /// Header and one row of die.csv.
+    /// Header and one row of die.csv (no timing: see wall_seconds).
     static void
     write_csv_header(std::ostream &out);
     static void

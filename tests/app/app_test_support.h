@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +15,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 #include <vector>
 
@@ -53,17 +55,92 @@ namespace compax::testing
     RunResult
     compax(const std::string &arguments) const
     {
+      return shell("'" + std::string(COMPAX_EXECUTABLE) + "' " + arguments);
+    }
+
+    /// Starts `compax <arguments>` in the background in the test folder
+    /// (its output goes to @p log) and returns its process id.
+    pid_t
+    start(const std::string &arguments, const std::string &log) const
+    {
+      const auto pid_file = folder / "pid";
+      std::filesystem::remove(pid_file);
+      const std::string line = "cd '" + folder.string() + "' && ('"
+                               + COMPAX_EXECUTABLE + "' " + arguments + " > '"
+                               + log + "' 2>&1 & echo $! > '"
+                               + pid_file.string() + "')";
+      EXPECT_EQ(std::system(line.c_str()), 0);
+      pid_t pid = 0;
+      for (int k = 0; k < 500 && pid <= 0; ++k)
+        {
+          std::ifstream(pid_file) >> pid;
+          if (pid <= 0)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+      std::filesystem::remove(pid_file);
+      return pid;
+    }
+
+    /// Runs a shell command line in the test folder (the executable is
+    /// COMPAX_EXECUTABLE), e.g. with environment variables.
+    RunResult
+    shell(const std::string &command) const
+    {
       const auto out = folder / "stdout.txt", err = folder / "stderr.txt";
-      const std::string command
-        = "cd '" + folder.string() + "' && '" + COMPAX_EXECUTABLE + "' "
-          + arguments + " > '" + out.string() + "' 2> '" + err.string() + "'";
-      const int status = std::system(command.c_str());
+      const std::string line = "cd '" + folder.string() + "' && " + command
+                               + " > '" + out.string() + "' 2> '" + err.string()
+                               + "'";
+      const int status = std::system(line.c_str());
       RunResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1,
                   read(out),
                   read(err)};
       std::filesystem::remove(out);
       std::filesystem::remove(err);
       return r;
+    }
+
+    /// Every file below the test folder (relative path and content) and
+    /// every folder (path and '/'): what was there before a run must be
+    /// there after it, unchanged.
+    std::map<std::string, std::string>
+    contents() const
+    {
+      std::map<std::string, std::string> files;
+      for (const auto &e :
+           std::filesystem::recursive_directory_iterator(folder))
+        if (e.is_regular_file())
+          files[e.path().lexically_relative(folder).string()] = read(e.path());
+        else
+          files[e.path().lexically_relative(folder).string() + "/"] = "";
+      return files;
+    }
+
+    /// Bad input that leaves everything as it was: exit code 2, one stderr
+    /// line that contains every piece of `expected` and no MPI_ABORT text,
+    /// and exactly the files of `before` (no staging folder, lock file or
+    /// output folder left behind).
+    void
+    expect_refused(const RunResult                          &r,
+                   const std::vector<std::string>           &expected,
+                   const std::map<std::string, std::string> &before) const
+    {
+      EXPECT_EQ(r.exit_code, 2) << r.err << r.out;
+      for (const std::string &piece : expected)
+        EXPECT_NE(r.err.find(piece), std::string::npos)
+          << "expected '" << piece << "' in stderr: " << r.err;
+      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+      EXPECT_EQ(r.err.find("MPI_ABORT"), std::string::npos) << r.err;
+      EXPECT_EQ(contents(), before);
+      std::vector<std::string> left;
+      for (const auto &e :
+           std::filesystem::recursive_directory_iterator(folder))
+        {
+          const std::string name = e.path().filename().string();
+          if (name.find(".partial-") != std::string::npos
+              || (name.size() > 5 && name.rfind(".lock") == name.size() - 5))
+            left.push_back(name);
+        }
+      EXPECT_TRUE(left.empty()) << left.front();
     }
 
     /// Writes a file in the test folder.
@@ -105,6 +182,21 @@ namespace compax::testing
 
     std::filesystem::path folder;
   };
+
+  /// A die study of a few seconds: 60 particles in a 2 mm die, 7
+  /// compaction targets with the unloading points 0.62 (target 5) and 0.7
+  /// (target 7), checkpoints after targets 2, 4 and 6.
+  inline const std::string small_die_study
+    = "subsection Packing\n"
+      " set Number of particles = 60\n"
+      " set Die diameter = 2e-3\n"
+      "end\n"
+      "subsection Protocol\n"
+      " set Final relative density = 0.7\n"
+      " set Compaction steps = 6\n"
+      " set Unloading points = 0.62, 0.7\n"
+      " set Checkpoint interval = 2\n"
+      "end\n";
 
   /// A CSV file as its header and its columns by name, as numbers (NaN for
   /// text) and as text.

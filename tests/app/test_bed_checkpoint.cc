@@ -48,7 +48,7 @@ TEST(BedCheckpoint, RestartEqualsUninterruptedRun)
        / ("compax-bed-" + std::to_string(::getpid()) + ".h5"))
         .string();
   {
-    coupling::Hdf5ArchiveWriter writer(file);
+    coupling::Hdf5ArchiveWriter writer(file, {"test", ""});
     cli::save_bed(writer, "state", original);
     writer.commit();
   }

@@ -109,18 +109,7 @@ TEST_F(DieResume, KilledRunResumesFromItsStagedCheckpoint)
 
   // The same study in the background, killed (SIGKILL: no clean-up) as soon
   // as its first checkpoint exists in the staging folder.
-  ASSERT_EQ(std::system(("cd '" + folder.string() + "' && ('"
-                         + COMPAX_EXECUTABLE
-                         + "' die full.prm -o out > out.log 2>&1 & echo $! > "
-                           "pid)")
-                          .c_str()),
-            0);
-  pid_t pid = 0;
-  for (int k = 0; k < 500 && pid <= 0; ++k)
-    {
-      std::ifstream(folder / "pid") >> pid;
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
+  const pid_t pid = start("die full.prm -o out", "out.log");
   ASSERT_GT(pid, 0);
   std::filesystem::path checkpoint;
   for (int k = 0; k < 6000 && checkpoint.empty(); ++k)

@@ -151,7 +151,7 @@ TEST_F(TabletApp, StoppedRunResumesToTheUninterruptedResult)
   const auto stopped = compax("tablet stop.prm -o stopped");
   ASSERT_EQ(stopped.exit_code, 3) << stopped.out;
   ASSERT_TRUE(
-    std::filesystem::exists(folder / "stopped" / "checkpoint" / "steps.bin"));
+    std::filesystem::exists(folder / "stopped" / "checkpoint" / "tablet.h5"));
   const auto resumed = compax("tablet resume.prm -o resumed");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_NE(resumed.out.find("Resuming after step 30"), std::string::npos);

@@ -1,9 +1,12 @@
 #include "coupling/hdf5_archive.h"
 
+#include "tests/support/temporary_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -18,34 +21,8 @@ namespace fs = std::filesystem;
 namespace
 {
   /// A fresh directory per test, removed afterwards.
-  class Hdf5Archive : public ::testing::Test
+  class Hdf5Archive : public compax::testing::TemporaryFolderTest
   {
-  protected:
-    void
-    SetUp() override
-    {
-      const auto *info
-        = ::testing::UnitTest::GetInstance()->current_test_info();
-      dir
-        = fs::temp_directory_path()
-          / ("compax_hdf5_" + std::to_string(::getpid()) + "_" + info->name());
-      fs::remove_all(dir);
-      fs::create_directories(dir);
-    }
-
-    void
-    TearDown() override
-    {
-      fs::remove_all(dir);
-    }
-
-    std::string
-    file(const std::string &name) const
-    {
-      return (dir / name).string();
-    }
-
-    fs::path dir;
   };
 
   const std::vector<double> positions
@@ -66,13 +43,13 @@ TEST_F(Hdf5Archive, RoundTripIsExact)
     matrix[i] = 0.1 * double(i) - 1.0 / 7.0;
 
   {
-    Hdf5ArchiveWriter writer(path);
+    Hdf5ArchiveWriter writer(path, {"test", ""});
     writer.write_array("positions", positions);
     writer.write_array("rve/stress", matrix, {3, 4});
     writer.write_array("rve/empty", {});
     writer.write_attribute("time", 1.0 / 3.0);
     writer.write_attribute("tiny", 4.9e-324);
-    writer.write_attribute("format", std::string("compax-checkpoint-1"));
+    writer.write_attribute("label", std::string("compax-checkpoint-1"));
     EXPECT_TRUE(fs::exists(path + ".tmp"));
     EXPECT_FALSE(fs::exists(path));
     writer.commit();
@@ -95,7 +72,7 @@ TEST_F(Hdf5Archive, RoundTripIsExact)
   EXPECT_TRUE(reader.read_array("rve/empty").empty());
   EXPECT_EQ(reader.read_attribute("time"), 1.0 / 3.0);
   EXPECT_EQ(reader.read_attribute("tiny"), 4.9e-324);
-  EXPECT_EQ(reader.read_text_attribute("format"), "compax-checkpoint-1");
+  EXPECT_EQ(reader.read_text_attribute("label"), "compax-checkpoint-1");
   EXPECT_TRUE(reader.has_array("rve/stress"));
   EXPECT_FALSE(reader.has_array("rve")); // a group, not an array
   EXPECT_FALSE(reader.has_array("rve/strain"));
@@ -122,7 +99,7 @@ TEST_F(Hdf5Archive, MissingFileGivesClearError)
   std::ofstream(text) << "not an HDF5 file\n";
   EXPECT_THROW(Hdf5ArchiveReader{text}, Hdf5ArchiveError);
 
-  EXPECT_THROW(Hdf5ArchiveWriter(file("missing_dir/state.h5")),
+  EXPECT_THROW(Hdf5ArchiveWriter(file("missing_dir/state.h5"), {"test", ""}),
                Hdf5ArchiveError);
 }
 
@@ -130,7 +107,7 @@ TEST_F(Hdf5Archive, MissingOrMistypedEntriesThrow)
 {
   const std::string path = file("state.h5");
   {
-    Hdf5ArchiveWriter writer(path);
+    Hdf5ArchiveWriter writer(path, {"test", ""});
     writer.write_array("x", {1.0, 2.0});
     writer.write_attribute("E", 1.0e9);
     writer.write_attribute("unit", std::string("Pa"));
@@ -156,12 +133,12 @@ TEST_F(Hdf5Archive, UncommittedWriteKeepsPreviousArchive)
 {
   const std::string path = file("checkpoint.h5");
   {
-    Hdf5ArchiveWriter first(path);
+    Hdf5ArchiveWriter first(path, {"test", ""});
     first.write_attribute("step", 1.0);
     first.commit();
   }
   {
-    Hdf5ArchiveWriter second(path);
+    Hdf5ArchiveWriter second(path, {"test", ""});
     second.write_attribute("step", 2.0);
     second.write_array("x", positions);
     // While the new checkpoint is written, the old one stays readable.
@@ -174,7 +151,7 @@ TEST_F(Hdf5Archive, UncommittedWriteKeepsPreviousArchive)
   EXPECT_FALSE(reader.has_array("x"));
 
   {
-    Hdf5ArchiveWriter third(path);
+    Hdf5ArchiveWriter third(path, {"test", ""});
     third.write_attribute("step", 3.0);
     third.commit();
   }

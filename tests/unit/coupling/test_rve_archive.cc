@@ -8,6 +8,8 @@
 #include "dem/rve/periodic_packing.h"
 #include "dem/rve/rve_loading.h"
 
+#include "tests/support/temporary_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -23,28 +25,8 @@ namespace
   const dem::ElastoplasticMaterial material1{5e9, 0.25, 150e6, 2.0};
   constexpr double                 R = 220e-6;
 
-  class RveArchive : public ::testing::Test
+  class RveArchive : public compax::testing::TemporaryFolderTest
   {
-  protected:
-    void
-    SetUp() override
-    {
-      const auto *info
-        = ::testing::UnitTest::GetInstance()->current_test_info();
-      dir = fs::temp_directory_path()
-            / ("compax_rve_archive_" + std::to_string(::getpid()) + "_"
-               + info->name());
-      fs::remove_all(dir);
-      fs::create_directories(dir);
-    }
-
-    void
-    TearDown() override
-    {
-      fs::remove_all(dir);
-    }
-
-    fs::path dir;
   };
 
   /// A bonded, plastically loaded cell: 80 spheres of Material 1 compacted
@@ -176,8 +158,7 @@ TEST_F(RveArchive, NotAnRveArchiveIsRejected)
   const dem::ContactModel model(material1, 1.26e6);
   const std::string       file = (dir / "other.h5").string();
   {
-    coupling::Hdf5ArchiveWriter w(file);
-    w.write_attribute("format", "something else");
+    coupling::Hdf5ArchiveWriter w(file, {"something-else", ""});
     w.commit();
   }
   EXPECT_THROW(coupling::load_rve(file, model), coupling::Hdf5ArchiveError);
