@@ -6,6 +6,7 @@
 #include "apps/crystal/crystal_command.h"
 #include "apps/database/database_command.h"
 #include "apps/die/die_command.h"
+#include "apps/die/jamming_command.h"
 #include "apps/mcdem/calibrate_command.h"
 #include "apps/mcdem/mcdem_command.h"
 #include "apps/rve/rve_command.h"
@@ -19,6 +20,7 @@ namespace compax::cli
     std::vector<std::unique_ptr<Command>> commands;
     commands.push_back(make_contact_command());
     commands.push_back(make_die_command());
+    commands.push_back(make_jamming_command());
     commands.push_back(make_crystal_command());
     commands.push_back(make_mcdem_command());
     commands.push_back(make_calibrate_command());

@@ -53,6 +53,7 @@ namespace compax::cli
       visit(r.iterations);
       visit(r.cg_iterations);
       visit(r.cutbacks);
+      visit(r.relaxed);
       // Not the timing (wall_seconds): the same study gives the same
       // checkpoint.
     }

@@ -216,22 +216,6 @@ namespace compax::cli
                                 });
     }
 
-    /// The compaction targets from the packing's relative density @p rho_0
-    /// to the final density; throws InputError if that is not above it.
-    void
-    set_compaction_targets(DieStudy &study, const double rho_0)
-    {
-      if (study.final_density <= rho_0)
-        reject_entry("Protocol/Final relative density",
-                     format_number(study.final_density),
-                     "must exceed the packing's relative density "
-                       + format_number(rho_0));
-      study.protocol.compaction_targets
-        = dem::density_targets(rho_0,
-                               study.final_density,
-                               study.compaction_steps);
-    }
-
     /// A run resumed from a compaction checkpoint: where it stands and the
     /// folder of the run that wrote it.
     struct ResumePoint

@@ -4,6 +4,7 @@
 #include "apps/common/contact_parameters.h"
 #include "apps/common/equilibrium_parameters.h"
 #include "apps/common/material_parameters.h"
+#include "dem/die/die_setup.h"
 
 #include <algorithm>
 #include <cmath>
@@ -443,7 +444,7 @@ namespace compax::cli
       = prm.get_double("Die-wall friction coefficient");
     protocol.ejection_step       = prm.get_double("Ejection step");
     protocol.max_ejection_steps  = prm.get_integer("Maximum ejection steps");
-    protocol.consolidate = prm.get("Consolidation") == "frozen-history";
+    protocol.consolidate         = prm.get("Consolidation") == "frozen-history";
     protocol.checkpoint_interval = prm.get_integer("Checkpoint interval");
     protocol.stop_after      = prm.get_integer("Stop after compaction steps");
     const std::string resume = prm.get("Resume from");
@@ -497,5 +498,19 @@ namespace compax::cli
             resume,
             resume_parameters,
             state_parameters};
+  }
+
+  void
+  set_compaction_targets(DieStudy &study, const double rho_0)
+  {
+    if (study.final_density <= rho_0)
+      reject_entry("Protocol/Final relative density",
+                   format_number(study.final_density),
+                   "must exceed the packing's relative density "
+                     + format_number(rho_0));
+    study.protocol.compaction_targets
+      = dem::density_targets(rho_0,
+                             study.final_density,
+                             study.compaction_steps);
   }
 } // namespace compax::cli

@@ -41,4 +41,9 @@ namespace compax::cli
   /// Reads and cross-checks them; throws InputError naming the entry.
   DieStudy
   get_die_study(dealii::ParameterHandler &prm);
+
+  /// The compaction targets from the packing's relative density @p rho_0
+  /// to the final density; throws InputError if that is not above it.
+  void
+  set_compaction_targets(DieStudy &study, double rho_0);
 } // namespace compax::cli

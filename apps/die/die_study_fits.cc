@@ -1,6 +1,7 @@
 #include "apps/die/die_study_fits.h"
 
 #include "dem/analysis/curve_fits.h"
+#include "dem/die/jamming_study.h"
 
 #include <cmath>
 #include <fstream>
@@ -57,17 +58,12 @@ namespace compax::cli
                  const std::vector<dem::BranchSummary> &branches,
                  const double                           pressure_resolution)
   {
-    // The jammed part of the compaction path: the upper punch carries a
-    // resolved pressure (step 0: the loose deposit).
-    std::vector<double> rho, Z, pressure;
-    for (const auto &r : records)
-      if (r.stage == "compaction" && r.step > 0 && r.coordination_number > 0
-          && r.upper_punch_pressure > pressure_resolution)
-        {
-          rho.push_back(r.relative_density);
-          Z.push_back(r.coordination_number);
-          pressure.push_back(r.upper_punch_pressure);
-        }
+    std::vector<double> rho, pressure;
+    for (const auto &r : dem::jammed_compaction(records, pressure_resolution))
+      {
+        rho.push_back(r.relative_density);
+        pressure.push_back(r.upper_punch_pressure);
+      }
     std::vector<double> rho_max, rho_min, recovery, residual, bonding;
     // E and nu only where the unloading curve gave them (two or more
     // points in its central third).
@@ -87,8 +83,7 @@ namespace compax::cli
           }
       }
 
-    const auto coordination
-      = try_fit(&dem::fit_coordination, rho, Z, std::size_t(5));
+    const auto coordination = dem::fit_jamming(records, pressure_resolution);
     std::optional<dem::PunchPressureFit> punch;
     if (coordination && rho.size() >= 2)
       try

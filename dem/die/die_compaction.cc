@@ -29,28 +29,53 @@ namespace compax::dem
       return bed.particles.solid_volume() / (bed.walls.punch_area() * rho);
     }
 
+    /// Axial extent and largest radial reach of a compact's spheres [m].
+    struct CompactExtent
+    {
+      double z_lo = 1e300, z_hi = -1e300, r_max = 0.0;
+    };
+
+    CompactExtent
+    compact_extent(const ParticleSystem &p)
+    {
+      CompactExtent e;
+      for (std::size_t i = 0; i < p.size(); ++i)
+        {
+          const auto &x = p.positions[i];
+          e.z_lo        = std::min(e.z_lo, x[2] - p.radii[i]);
+          e.z_hi        = std::max(e.z_hi, x[2] + p.radii[i]);
+          e.r_max = std::max(e.r_max, std::hypot(x[0], x[1]) + p.radii[i]);
+        }
+      return e;
+    }
+
+    /// Angular and axial sectors of about one mean diameter on the
+    /// envelope of a compact (at least 8 x 1).
+    std::pair<int, int>
+    envelope_sectors(const Bed &bed)
+    {
+      const double        d = 2.0 * bed.particles.mean_radius();
+      const CompactExtent e = compact_extent(bed.particles);
+      return {std::max(8, static_cast<int>(2 * pi * e.r_max / d)),
+              std::max(1, static_cast<int>((e.z_hi - e.z_lo) / d))};
+    }
+
     /**
      * Volume of the cylinder that envelops a compact: its radius is the
      * mean over angular and height sectors (about one diameter wide) of
      * the outermost sphere surface max(r_i + R_i), its height the axial
      * extent of the spheres. Averaging over sectors keeps a few protruding
-     * surface spheres from widening the cylinder.
+     * surface spheres from widening the cylinder. The sectors are
+     * n_theta x n_z (see envelope_sectors()); the same grid before and
+     * after ejection, so that a moving surface sphere cannot change the
+     * number of sectors and the volume by a jump.
      */
     double
-    envelope_volume(const Bed &bed)
+    envelope_volume(const Bed &bed, const int n_theta, const int n_z)
     {
-      const auto  &p    = bed.particles;
-      const double d    = 2.0 * p.mean_radius();
-      double       z_lo = 1e300, z_hi = -1e300, r_max = 0.0;
-      for (std::size_t i = 0; i < p.size(); ++i)
-        {
-          const auto &x = p.positions[i];
-          z_lo          = std::min(z_lo, x[2] - p.radii[i]);
-          z_hi          = std::max(z_hi, x[2] + p.radii[i]);
-          r_max         = std::max(r_max, std::hypot(x[0], x[1]) + p.radii[i]);
-        }
-      const int n_theta = std::max(8, static_cast<int>(2 * pi * r_max / d));
-      const int n_z     = std::max(1, static_cast<int>((z_hi - z_lo) / d));
+      const auto         &p    = bed.particles;
+      const CompactExtent e    = compact_extent(p);
+      const double        z_lo = e.z_lo, z_hi = e.z_hi, r_max = e.r_max;
       std::vector<double> outer(static_cast<std::size_t>(n_theta) * n_z, 0.0);
       for (std::size_t i = 0; i < p.size(); ++i)
         {
@@ -221,6 +246,7 @@ namespace compax::dem
     d.iterations         = r.iterations;
     d.cg_iterations      = r.cg_iterations;
     d.cutbacks           = r.cutbacks;
+    d.relaxed            = r.relaxed ? 1 : 0;
     d.wall_seconds       = now() - start_time;
     return d;
   }
@@ -262,7 +288,9 @@ namespace compax::dem
     completed     = 0;
     n_branches    = 0;
     stopped_early = false;
-    if (protocol.consolidate)
+    // Elastic spheres carry no history: relaxing them to jamming is their
+    // quasi-static path, not a shortcut.
+    if (protocol.consolidate || elastic)
       consolidate();
 
     compact_from(0);
@@ -457,6 +485,9 @@ namespace compax::dem
     check(r, what.str());
     DieRecord d      = record(path, "compaction", 0, step, r);
     d.rho_max_in_die = d.relative_density;
+    // The bonded path jams where Newton takes over from the relaxation.
+    if (rho_jammed == 0.0 && !protocol.consolidate && !elastic && !r.relaxed)
+      rho_jammed = d.relative_density;
     emit(d, path);
     if (progress)
       {
@@ -548,7 +579,8 @@ namespace compax::dem
     s.tablet = unloading_elasticity(strain, axial, radial);
     // The compact's envelope at C, where its volume is known (punch gap
     // H_min times the die cross-section).
-    const double envelope = envelope_volume(bed);
+    const auto [n_theta, n_z] = envelope_sectors(bed);
+    const double envelope     = envelope_volume(bed, n_theta, n_z);
     if (progress)
       *progress << std::setprecision(4) << "unloading branch " << branch
                 << ": rho_max " << s.rho_max_in_die << "  rho_min "
@@ -559,7 +591,7 @@ namespace compax::dem
       on_branch_state(bed, "unloading", branch);
     if (protocol.eject)
       {
-        eject(bed, branch, s, envelope);
+        eject(bed, branch, s, envelope, {n_theta, n_z});
         if (on_branch_state)
           on_branch_state(bed, "ejection", branch);
       }
@@ -567,16 +599,18 @@ namespace compax::dem
   }
 
   void
-  DieCompaction::eject(Bed           &bed,
-                       const int      branch,
-                       BranchSummary &s,
-                       const double   envelope_in_die)
+  DieCompaction::eject(Bed                      &bed,
+                       const int                 branch,
+                       BranchSummary            &s,
+                       const double              envelope_in_die,
+                       const std::pair<int, int> sectors)
   {
     // Out of the die the compact is free radially: its volume is the in-die
     // volume at C scaled by the change of its envelope volume (same
     // definition before and after, so surface roughness cancels).
     auto tablet_density = [&](const Bed &b) {
-      return s.rho_min_in_die * envelope_in_die / envelope_volume(b);
+      return s.rho_min_in_die * envelope_in_die
+             / envelope_volume(b, sectors.first, sectors.second);
     };
     // The upper punch stays where it stopped carrying force (so that loose
     // surface particles are not lost); the die wall then opens in steps.
@@ -645,7 +679,7 @@ namespace compax::dem
            "die_wall_pressure,coordination_number,bonding_surface,bonds,"
            "bonds_formed,bonds_broken,elastic_recovery_rho,"
            "elastic_recovery_H,residual_radial_pressure,ejection_pressure,"
-           "residual,iterations,cg_iterations,cutbacks\n";
+           "residual,iterations,cg_iterations,cutbacks,relaxed\n";
   }
 
   void
@@ -662,7 +696,8 @@ namespace compax::dem
         << r.bonds_broken << ',' << r.elastic_recovery_rho << ','
         << r.elastic_recovery_H << ',' << r.residual_radial_pressure << ','
         << r.ejection_pressure << ',' << r.residual << ',' << r.iterations
-        << ',' << r.cg_iterations << ',' << r.cutbacks << '\n';
+        << ',' << r.cg_iterations << ',' << r.cutbacks << ',' << r.relaxed
+        << '\n';
     out.precision(old);
   }
 } // namespace compax::dem

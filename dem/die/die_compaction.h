@@ -115,6 +115,11 @@ namespace compax::dem
     int    iterations         = 0;
     int    cg_iterations      = 0;
     int    cutbacks           = 0;
+    /// 1: the state is an unjammed relaxation of the bonded path, balanced
+    /// to ConsolidationOptions::relative_tolerance or the force resolution
+    /// (DieCompaction::force_resolution()); 0: a Newton solution to the
+    /// Solver tolerances (or a record without a solve).
+    int relaxed = 0;
     /// Wall time since the run (or its resumption) started [s]: not in
     /// die.csv (two runs of one study give the same file), the app writes
     /// it to timing.csv.
@@ -292,8 +297,10 @@ namespace compax::dem
     double
     force_resolution() const;
 
-    /// In-die relative density at which consolidation found the bed jammed
-    /// (0 without consolidation) [-].
+    /// In-die relative density at which the bed jammed [-]: where the
+    /// frozen-history consolidation ended, or on the bonded path the first
+    /// compaction state solved by Newton (its punches carried the jamming
+    /// pressure); 0 if not reached.
     double
     jamming_density() const
     {
@@ -357,7 +364,11 @@ namespace compax::dem
     consolidate();
 
     void
-    eject(Bed &bed, int branch, BranchSummary &summary, double envelope);
+    eject(Bed                &bed,
+          int                 branch,
+          BranchSummary      &summary,
+          double              envelope,
+          std::pair<int, int> sectors);
 
     DieRecord
     record(const Bed            &bed,

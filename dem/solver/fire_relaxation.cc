@@ -36,19 +36,17 @@ namespace compax::dem
                         const ContactModel &model,
                         const double        target,
                         const int           max_iterations,
-                        const double        force_floor,
-                        const double        force_free)
+                        const double        force_floor)
   {
     DieBedSystem system(bed, model, assembler);
-    return relax(system, target, max_iterations, force_floor, force_free);
+    return relax(system, target, max_iterations, force_floor);
   }
 
   FireResult
   FireRelaxation::relax(EquilibriumSystem &system,
                         const double       target,
                         const int          max_iterations,
-                        const double       force_floor,
-                        const double       force_free)
+                        const double       force_floor)
   {
     // FIRE (Bitzek et al. 2006) in units where a particle's own stiffness
     // over its mass is 1. (The FIRE 2.0 variant, with dt_max = 1 and the
@@ -74,8 +72,7 @@ namespace compax::dem
         result.relative_residual
           = sums.mean_force > 0.0 ? fmax / sums.mean_force : 0.0;
         result.iterations = it;
-        if (fmax <= target * sums.mean_force || fmax <= force_floor
-            || sums.mean_force <= force_free)
+        if (fmax <= target * sums.mean_force || fmax <= force_floor)
           {
             result.converged = true;
             break;

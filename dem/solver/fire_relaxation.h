@@ -42,15 +42,13 @@ namespace compax::dem
     /**
      * Relaxes until max_i |F_i| <= target_relative_residual times the mean
      * contact force, or max_i |F_i| <= force_floor [N] (forces negligible
-     * in absolute terms), or the mean contact force is at most force_free
-     * [N] (the bed is force-free to that resolution), or max_iterations.
+     * in absolute terms), or max_iterations.
      */
     FireResult
     relax(EquilibriumSystem &system,
           double             target_relative_residual,
           int                max_iterations,
-          double             force_floor = 0.0,
-          double             force_free  = 0.0);
+          double             force_floor = 0.0);
 
     /// The same for a die bed.
     FireResult
@@ -58,8 +56,7 @@ namespace compax::dem
           const ContactModel &model,
           double              target_relative_residual,
           int                 max_iterations,
-          double              force_floor = 0.0,
-          double              force_free  = 0.0);
+          double              force_floor = 0.0);
 
   private:
     void

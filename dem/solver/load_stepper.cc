@@ -113,7 +113,10 @@ namespace compax::dem
                                         : 0.0);
     total.bonds.formed += b.formed;
     total.bonds.broken += b.broken;
-    loose = below_jamming(bed, sums) ? 1 : 0;
+    // A bed that has jammed once stays a solid: its unloading and ejection
+    // are static equilibria solved by Newton, however small the punch load.
+    if (loose != 0)
+      loose = below_jamming(bed, sums) ? 1 : 0;
   }
 
   void
@@ -172,7 +175,8 @@ namespace compax::dem
         predict(bed, next);
         bed.walls = next;
         EquilibriumResult r;
-        if (relax_unjammed(bed, total))
+        total.relaxed = relax_unjammed(bed, total);
+        if (total.relaxed)
           r = total.last;
         else
           {

@@ -17,7 +17,8 @@ namespace compax::dem
     /**
      * Punch pressure below which the bed counts as unjammed [Pa]; 0: none
      * (every sub-step is solved by the trust-region Newton). While the bed
-     * is unjammed (the punches of its last converged state carried less),
+     * is unjammed (the punches of every converged state so far carried
+     * less; once jammed, it stays jammed for unloading and ejection),
      * a sub-step is relaxed by FIRE at fixed internal variables to
      * unjammed_tolerance times the mean contact force, or until every net
      * force is below force_resolution: below jamming Newton has no
@@ -60,6 +61,10 @@ namespace compax::dem
     int               assemblies       = 0;
     int               fire_iterations  = 0;
     double            fire_seconds     = 0.0;
+    /// Whether the last converged sub-step was an unjammed relaxation
+    /// (balanced to LoadSteppingOptions::unjammed_tolerance or the force
+    /// resolution) rather than a Newton solve to EquilibriumOptions.
+    bool relaxed = false;
   };
 
   /**
@@ -106,9 +111,9 @@ namespace compax::dem
       have_increment = false;
     }
 
-    /// Whether the punches of the last converged state carried less than
-    /// the jamming pressure (a stepper that has not converged a sub-step
-    /// yet asks the bed).
+    /// Whether the punches of every converged state so far carried less
+    /// than the jamming pressure (a stepper that has not converged a
+    /// sub-step yet asks the bed).
     bool
     unjammed(Bed &bed);
 
@@ -136,7 +141,7 @@ namespace compax::dem
     FireRelaxation      fire;
     LoadSteppingOptions stepping;
     double              fraction = 1.0;
-    /// Whether the last converged state was unjammed; -1: not known yet.
+    /// Whether the bed is still unjammed; -1: not known yet.
     int loose = -1;
     Bed saved;
     // Secant predictor: the last converged sub-step's displacements and

@@ -12,7 +12,8 @@ using namespace compax::dem;
 /// die wall (radial forces only) the punch forces balance, |F_u - F_l|
 /// bounded by the sum of the particles' residual forces (N max_i |F_i|); every
 /// particle's net force is within the solver tolerance (recomputed
-/// independently); unloading ends with a free upper punch and a lower density.
+/// independently; an unjammed state of the bonded path within the relaxation
+/// tolerance); unloading ends with a free upper punch and a lower density.
 TEST(DieProtocol, PunchForcesBalanceAndBranchesAreConsistent)
 {
   DepositionParameters dp;
@@ -38,7 +39,15 @@ TEST(DieProtocol, PunchForcesBalanceAndBranchesAreConsistent)
       saw[0] |= r.stage == "compaction";
       saw[1] |= r.stage == "unloading";
       saw[2] |= r.stage == "ejection";
-      EXPECT_LE(r.residual, tol);
+      // Newton states to the solver tolerance; unjammed relaxations of the
+      // bonded path to theirs, or every net force below the resolution.
+      if (r.relaxed)
+        EXPECT_TRUE(r.residual <= protocol.consolidation.relative_tolerance
+                    || r.residual * r.mean_contact_force
+                         <= die.force_resolution())
+          << r.step;
+      else
+        EXPECT_LE(r.residual, tol) << r.stage << " step " << r.step;
       // Pair forces cancel in the sum of the particles' out-of-balance
       // forces, which leaves F_u - F_l (die wall radial): bounded by N
       // times the largest particle residual.

@@ -115,6 +115,7 @@ TEST(SolverConsolidation, ThousandParticlesReach085)
   DieProtocol        protocol;
   protocol.compaction_targets
     = density_targets(bed.relative_density(), 0.85, 21);
+  protocol.consolidate = true; // the frozen-history consolidation
   DieCompaction      die(bed, model, protocol);
   std::ostringstream csv;
   die.set_output(&csv, nullptr);

@@ -1,0 +1,123 @@
+#include "dem/die/jamming_study.h"
+
+#include <chrono>
+#include <cmath>
+#include <ostream>
+#include <stdexcept>
+
+namespace compax::dem
+{
+  std::vector<DieRecord>
+  jammed_compaction(const std::vector<DieRecord> &records,
+                    const double                  pressure_resolution)
+  {
+    std::vector<DieRecord> jammed;
+    for (const DieRecord &r : records)
+      if (r.stage == "compaction" && r.step > 0 && r.coordination_number > 0
+          && r.upper_punch_pressure > pressure_resolution)
+        jammed.push_back(r);
+    return jammed;
+  }
+
+  std::optional<CoordinationFit>
+  fit_jamming(const std::vector<DieRecord> &records,
+              const double                  pressure_resolution)
+  {
+    std::vector<double> rho, Z;
+    for (const DieRecord &r : jammed_compaction(records, pressure_resolution))
+      {
+        rho.push_back(r.relative_density);
+        Z.push_back(r.coordination_number);
+      }
+    if (rho.size() < 5)
+      return std::nullopt;
+    try
+      {
+        return fit_coordination(rho, Z);
+      }
+    catch (const std::exception &)
+      {
+        return std::nullopt;
+      }
+  }
+
+  std::string
+  JammingCase::protocol_name() const
+  {
+    return frozen_history ? "frozen-history" : "bonded-path";
+  }
+
+  ContactModel
+  with_fracture_toughness(const ContactModel &model,
+                          const double        fracture_toughness)
+  {
+    std::vector<ElastoplasticMaterial> materials;
+    for (unsigned int a = 0; a < model.n_materials(); ++a)
+      materials.push_back(model.material(a));
+    const std::size_t n = materials.size();
+    ContactModel      result(std::move(materials),
+                        std::vector<std::vector<double>>(
+                          n, std::vector<double>(n, fracture_toughness)),
+                        model.regularization);
+    result.wall_bonding = model.wall_bonding;
+    result.regularized  = model.regularized;
+    return result;
+  }
+
+  JammingResult
+  run_jamming_case(const Bed                &deposit,
+                   const ContactModel       &model,
+                   DieProtocol               protocol,
+                   const EquilibriumOptions &equilibrium,
+                   const JammingCase        &study_case,
+                   std::ostream             *progress)
+  {
+    protocol.consolidate = study_case.frozen_history;
+    protocol.unloading_points.clear();
+    protocol.checkpoint_interval = 0;
+    protocol.stop_after          = 0;
+    const ContactModel case_model
+      = with_fracture_toughness(model, study_case.fracture_toughness);
+    DieCompaction die(deposit, case_model, protocol, equilibrium);
+    die.set_output(nullptr, progress);
+
+    JammingResult result;
+    result.study_case = study_case;
+    const auto t0     = std::chrono::steady_clock::now();
+    try
+      {
+        die.run();
+      }
+    catch (const std::runtime_error &e)
+      {
+        result.failure = die.failed() ? die.failure() : e.what();
+      }
+    result.seconds
+      = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+          .count();
+    result.records         = die.records();
+    result.jamming_density = die.jamming_density();
+    result.fit = fit_jamming(result.records, die.pressure_resolution());
+    return result;
+  }
+
+  void
+  write_jamming_csv(std::ostream                     &out,
+                    const std::string                &material,
+                    const std::vector<JammingResult> &results)
+  {
+    const auto old = out.precision(10);
+    out << "material,fracture_toughness,protocol,rho_c_Z,Z_c,theta\n";
+    for (const JammingResult &r : results)
+      {
+        out << material << ',' << r.study_case.fracture_toughness << ','
+            << r.study_case.protocol_name() << ',';
+        if (r.fit)
+          out << r.fit->rho_c << ',' << r.fit->Z_c << ',' << r.fit->theta;
+        else
+          out << ",,";
+        out << '\n';
+      }
+    out.precision(old);
+  }
+} // namespace compax::dem
