@@ -1,0 +1,66 @@
+// `compax jamming` through the real executable on a small bed: one row of
+// jamming.csv per protocol and toughness; on the bonded path the unjammed
+// relaxations lie below the jamming pressure and end for good once the bed
+// has jammed; the frozen-history path has none; bad input names its entry.
+
+#include "app_test_support.h"
+
+using compax::testing::AppTest;
+using compax::testing::Csv;
+
+class JammingCommand : public AppTest
+{
+};
+
+TEST_F(JammingCommand, SmallBedGivesOneFitPerProtocolAndToughness)
+{
+  write("small.prm",
+        "subsection Packing\n set Number of particles = 150\n"
+        " set Die diameter = 3e-3\nend\n"
+        "subsection Protocol\n set Final relative density = 0.8\n"
+        " set Compaction steps = 20\n set Unloading points =\nend\n"
+        "subsection Jamming\n set Material label = m1\nend\n");
+  const auto r = compax("jamming small.prm -o out");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+
+  const Csv jamming(folder / "out" / "jamming.csv");
+  ASSERT_EQ(jamming.rows(), 4u);
+  EXPECT_EQ(jamming.text.at("material")[0], "m1");
+  EXPECT_EQ(jamming.text.at("protocol")[0], "bonded-path");
+  EXPECT_EQ(jamming.text.at("protocol")[3], "frozen-history");
+  EXPECT_EQ(jamming.column.at("fracture_toughness")[1], 0.0);
+
+  const Csv   path(folder / "out" / "jamming_path.csv");
+  const auto &protocol  = path.text.at("protocol");
+  const auto &relaxed   = path.column.at("relaxed");
+  const auto &p         = path.column.at("upper_punch_pressure");
+  const auto &step      = path.column.at("step");
+  bool        jammed    = false;
+  std::size_t n_relaxed = 0;
+  for (std::size_t i = 0; i < path.rows(); ++i)
+    {
+      if (step[i] == 0)
+        jammed = false; // the next case's deposit
+      if (protocol[i] == "frozen-history")
+        EXPECT_EQ(relaxed[i], 0.0) << "row " << i;
+      else if (relaxed[i] == 1.0)
+        {
+          ++n_relaxed;
+          EXPECT_FALSE(jammed) << "row " << i;
+          EXPECT_LT(p[i], 0.5e6) << "row " << i; // the jamming pressure
+        }
+      else if (step[i] > 0)
+        jammed = true;
+    }
+  EXPECT_GT(n_relaxed, 0u);
+  EXPECT_TRUE(std::filesystem::exists(folder / "out" / "timing.csv"));
+}
+
+TEST_F(JammingCommand, ElasticSpheresAreRefusedByName)
+{
+  write("elastic.prm", "subsection Contact\n set Contact law = elastic\nend\n");
+  const auto r = compax("jamming elastic.prm -o out");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("Contact/Contact law"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(folder / "out"));
+}

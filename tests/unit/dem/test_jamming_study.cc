@@ -1,0 +1,102 @@
+// The jamming study's pieces against independent values: the Eq. (14) fit
+// of a compaction path uses exactly the jammed states (closed-form data
+// recovered, unjammed and branch rows ignored), and K_Ic = 0 removes the
+// bridge's pull-off of the law (Eq. 4 with K_Ic = 0) while keeping the
+// materials.
+#include "dem/die/jamming_study.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+using namespace compax::dem;
+
+namespace
+{
+  DieRecord
+  compaction_row(const int step, const double rho, const double Z, double p)
+  {
+    DieRecord r;
+    r.stage                = "compaction";
+    r.step                 = step;
+    r.relative_density     = rho;
+    r.coordination_number  = Z;
+    r.upper_punch_pressure = p;
+    return r;
+  }
+} // namespace
+
+/// Rows of Eq. (14) above the pressure resolution among rows that a fit
+/// must not see (the deposit, unjammed states with an arbitrary Z below the
+/// resolution, an unloading branch): the fit returns the closed form's
+/// parameters.
+TEST(JammingStudy, FitUsesOnlyTheJammedCompactionStates)
+{
+  const double           Z_c = 4.2, Z_0 = 8.0, rho_c = 0.57, theta = 0.6;
+  const double           resolution = 5e3;
+  std::vector<DieRecord> rows{compaction_row(0, 0.48, 0.0, 0.0)};
+  int                    step = 1;
+  for (double rho = 0.50; rho < 0.57; rho += 0.01)
+    rows.push_back(compaction_row(step++, rho, 1.0 + rho, 0.5 * resolution));
+  for (int k = 0; k < 20; ++k)
+    {
+      const double rho = 0.58 + 0.01 * k;
+      rows.push_back(compaction_row(step++,
+                                    rho,
+                                    Z_c + Z_0 * std::pow(rho - rho_c, theta),
+                                    1e6 * (rho - rho_c)));
+    }
+  DieRecord unloading = compaction_row(1, 0.70, 1.0, 1e6);
+  unloading.stage     = "unloading";
+  rows.push_back(unloading);
+
+  EXPECT_EQ(jammed_compaction(rows, resolution).size(), 20u);
+  const auto fit = fit_jamming(rows, resolution);
+  ASSERT_TRUE(fit.has_value());
+  EXPECT_NEAR(fit->Z_c, Z_c, 1e-3);
+  EXPECT_NEAR(fit->rho_c, rho_c, 1e-4);
+  EXPECT_NEAR(fit->theta, theta, 1e-3);
+
+  // Fewer than five jammed states: no fit.
+  rows.resize(12);
+  EXPECT_FALSE(fit_jamming(rows, resolution).has_value());
+}
+
+/// K_Ic = 0 leaves the materials and switches the bridges off: in the
+/// unloading range of a bonded contact the bridge of the original law pulls
+/// harder; on first loading both laws agree.
+TEST(JammingStudy, ZeroToughnessKeepsMaterialsAndRemovesBridges)
+{
+  const ContactModel bonded(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
+                            1.26e6);
+  const ContactModel unbonded = with_fracture_toughness(bonded, 0.0);
+  ASSERT_EQ(unbonded.n_materials(), 1u);
+  EXPECT_EQ(unbonded.fracture_toughness(0, 0), 0.0);
+  EXPECT_EQ(unbonded.material(0).youngs_modulus,
+            bonded.material(0).youngs_modulus);
+  EXPECT_EQ(unbonded.regularization, bonded.regularization);
+
+  // A contact plastically loaded to a_p = R / 10 and unloaded halfway to
+  // its breakage overlap: the bridge pulls (K_Ic > 0) where the unbonded
+  // contact does not pull harder; in compression beyond gamma_p, where a
+  // > a_p, both laws are the same plastic loading curve.
+  const double R   = 220e-6;
+  const auto   lb  = bonded.pair_law(0, R, 0, R);
+  const auto   lu  = unbonded.pair_law(0, R, 0, R);
+  const double a_p = R / 10, gamma_p = lb.plastic_overlap(a_p);
+  const double gamma = 0.5 * (gamma_p + lb.breakage_overlap(a_p));
+  EXPECT_LT(lb.response(gamma, a_p, a_p).force, 0.0);
+  EXPECT_LT(lb.response(gamma, a_p, a_p).force,
+            lu.response(gamma, a_p, a_p).force);
+  EXPECT_DOUBLE_EQ(lb.response(1.5 * gamma_p, 0.0, 0.0).force,
+                   lu.response(1.5 * gamma_p, 0.0, 0.0).force);
+
+  std::ostringstream csv;
+  JammingResult      r;
+  r.study_case = {0.0, true};
+  write_jamming_csv(csv, "m1", {r});
+  EXPECT_EQ(csv.str(),
+            "material,fracture_toughness,protocol,rho_c_Z,Z_c,theta\n"
+            "m1,0,frozen-history,,,\n");
+}
