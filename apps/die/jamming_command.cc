@@ -7,6 +7,7 @@
 #include "dem/die/jamming_study.h"
 
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 
 namespace compax::cli
@@ -98,7 +99,9 @@ namespace compax::cli
                "upper punch carries more than the pressure resolution "
                "(5 kPa).\n\nWrites jamming.csv (material, fracture_toughness "
                "[Pa m^1/2], protocol, rho_c_Z, Z_c, theta; empty fit cells "
-               "where Eq. 14 could not be fitted), jamming_path.csv (every "
+               "where Eq. 14 could not be fitted; rho_jammed, Z_jammed: the "
+               "first state whose punches carried 0.5 MPa, a measure that "
+               "needs no fit), jamming_path.csv (every "
                "case's compaction path: density, punch pressure [Pa], "
                "coordination number, bonds, bonding surface [m^2], whether "
                "the state is an unjammed relaxation, residual) and "
@@ -153,7 +156,8 @@ namespace compax::cli
         bool                            failed = false;
         for (const dem::JammingCase &c : input.cases)
           {
-            std::cout << "Case K_Ic = " << c.fracture_toughness << " Pa m^1/2, "
+            std::cout << std::setprecision(6)
+                      << "Case K_Ic = " << c.fracture_toughness << " Pa m^1/2, "
                       << c.protocol_name() << std::endl;
             results.push_back(dem::run_jamming_case(deposit,
                                                     study.model,
@@ -167,10 +171,14 @@ namespace compax::cli
                 failed = true;
                 std::cout << "  stopped early: " << r.failure << std::endl;
               }
+            std::cout << std::setprecision(4) << "  punch at the jamming "
+                      << "pressure from rho " << r.jamming_density << " (Z "
+                      << r.jamming_coordination << "), " << r.seconds << " s"
+                      << std::endl;
             if (r.fit)
               std::cout << "  Eq. 14: rho_c_Z " << r.fit->rho_c << "  Z_c "
-                        << r.fit->Z_c << "  theta " << r.fit->theta << "  ("
-                        << r.seconds << " s)" << std::endl;
+                        << r.fit->Z_c << "  theta " << r.fit->theta
+                        << std::endl;
           }
         std::ofstream csv(folder / "jamming.csv");
         dem::write_jamming_csv(csv, input.material, results);

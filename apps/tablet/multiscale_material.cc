@@ -85,18 +85,22 @@ namespace compax::cli
     const coupling::RveDatabase db
       = coupling::build_rve_database(study.spec,
                                      study.cell.model,
-                                     [](const std::string &line) {
-                                       std::cout << "  " << line << std::endl;
+                                     [&log](const std::string &line) {
+                                       log << "  " << line << std::endl;
                                      });
-    const std::filesystem::path out = folder / "database";
-    std::filesystem::create_directories(out);
-    write_database_rows(out, db);
-    write_database_archive(out, db, parameters);
     std::vector<std::string> notes;
     const auto rows = coupling::fit_drucker_prager_cap(db, &notes);
     for (const std::string &n : notes)
-      std::cout << "  note: " << n << std::endl;
-    write_dpc_table(out, rows);
+      log << "  note: " << n << std::endl;
+    // Every rank computed the same table; one writes it.
+    if (write_files)
+      {
+        const std::filesystem::path out = folder / "database";
+        std::filesystem::create_directories(out);
+        write_database_rows(out, db);
+        write_database_archive(out, db, parameters);
+        write_dpc_table(out, rows);
+      }
     return std::make_shared<fem::DruckerPragerCap>(to_dpc_table(rows));
   }
 } // namespace compax::cli

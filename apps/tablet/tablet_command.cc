@@ -1116,21 +1116,6 @@ namespace compax::cli
       run(dealii::ParameterHandler    &prm,
           const std::filesystem::path &folder) const override
       {
-        // The CLI does not start MPI; do it here when mpirun has not.
-        std::unique_ptr<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
-        int initialized = 0;
-        MPI_Initialized(&initialized);
-        if (!initialized)
-          {
-            static int    argc   = 1;
-            static char   name[] = "compax";
-            static char  *args[] = {name, nullptr};
-            static char **argv   = args;
-            mpi
-              = std::make_unique<dealii::Utilities::MPI::MPI_InitFinalize>(argc,
-                                                                           argv,
-                                                                           1);
-          }
         TabletSetup setup = read(prm);
         // All ranks write their field pieces into rank 0's folder.
         std::string shared = folder.string();

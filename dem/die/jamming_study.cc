@@ -97,6 +97,10 @@ namespace compax::dem
           .count();
     result.records         = die.records();
     result.jamming_density = die.jamming_density();
+    for (const DieRecord &r : result.records)
+      if (r.stage == "compaction"
+          && r.relative_density == result.jamming_density)
+        result.jamming_coordination = r.coordination_number;
     result.fit = fit_jamming(result.records, die.pressure_resolution());
     return result;
   }
@@ -107,7 +111,8 @@ namespace compax::dem
                     const std::vector<JammingResult> &results)
   {
     const auto old = out.precision(10);
-    out << "material,fracture_toughness,protocol,rho_c_Z,Z_c,theta\n";
+    out << "material,fracture_toughness,protocol,rho_c_Z,Z_c,theta,"
+           "rho_jammed,Z_jammed\n";
     for (const JammingResult &r : results)
       {
         out << material << ',' << r.study_case.fracture_toughness << ','
@@ -116,7 +121,8 @@ namespace compax::dem
           out << r.fit->rho_c << ',' << r.fit->Z_c << ',' << r.fit->theta;
         else
           out << ",,";
-        out << '\n';
+        out << ',' << r.jamming_density << ',' << r.jamming_coordination
+            << '\n';
       }
     out.precision(old);
   }

@@ -48,8 +48,11 @@ namespace compax::dem
     std::optional<CoordinationFit> fit;
     /// The compaction path (die.csv rows, no branches).
     std::vector<DieRecord> records;
-    /// DieCompaction::jamming_density() [-].
+    /// DieCompaction::jamming_density(): the first state whose punches
+    /// carry the jamming pressure (0.5 MPa) [-]; 0 if not reached.
     double jamming_density = 0.0;
+    /// The coordination number of that state [-].
+    double jamming_coordination = 0.0;
     /// Empty, or why the compaction stopped early (the rows so far are
     /// kept and fitted).
     std::string failure;
@@ -79,7 +82,9 @@ namespace compax::dem
   with_fracture_toughness(const ContactModel &model, double fracture_toughness);
 
   /// jamming.csv: material,fracture_toughness,protocol,rho_c_Z,Z_c,theta
-  /// (empty fit cells where Eq. 14 could not be fitted).
+  /// (Eq. 14; empty cells where it could not be fitted), then
+  /// rho_jammed,Z_jammed (where the punches first carried the jamming
+  /// pressure; a measure that needs no fit).
   void
   write_jamming_csv(std::ostream                     &out,
                     const std::string                &material,

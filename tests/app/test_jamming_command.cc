@@ -29,6 +29,11 @@ TEST_F(JammingCommand, SmallBedGivesOneFitPerProtocolAndToughness)
   EXPECT_EQ(jamming.text.at("protocol")[0], "bonded-path");
   EXPECT_EQ(jamming.text.at("protocol")[3], "frozen-history");
   EXPECT_EQ(jamming.column.at("fracture_toughness")[1], 0.0);
+  for (std::size_t i = 0; i < 4; ++i)
+    {
+      EXPECT_GT(jamming.column.at("rho_jammed")[i], 0.4) << i;
+      EXPECT_LE(jamming.column.at("rho_jammed")[i], 0.8) << i;
+    }
 
   const Csv   path(folder / "out" / "jamming_path.csv");
   const auto &protocol  = path.text.at("protocol");
@@ -49,8 +54,19 @@ TEST_F(JammingCommand, SmallBedGivesOneFitPerProtocolAndToughness)
           EXPECT_FALSE(jammed) << "row " << i;
           EXPECT_LT(p[i], 0.5e6) << "row " << i; // the jamming pressure
         }
-      else if (step[i] > 0)
-        jammed = true;
+      else if (step[i] > 0 && !jammed)
+        {
+          // The first Newton state is where the case jammed.
+          jammed          = true;
+          const double K  = path.column.at("fracture_toughness")[i];
+          bool         ok = false;
+          for (std::size_t c = 0; c < 4; ++c)
+            ok |= jamming.text.at("protocol")[c] == protocol[i]
+                  && jamming.column.at("fracture_toughness")[c] == K
+                  && jamming.column.at("rho_jammed")[c]
+                       == path.column.at("relative_density")[i];
+          EXPECT_TRUE(ok) << "row " << i;
+        }
     }
   EXPECT_GT(n_relaxed, 0u);
   EXPECT_TRUE(std::filesystem::exists(folder / "out" / "timing.csv"));

@@ -16,14 +16,6 @@ namespace
   class TabletApp : public AppTest
   {
   protected:
-    void
-    SetUp() override
-    {
-      AppTest::SetUp();
-      if (compax("--help").out.find("tablet") == std::string::npos)
-        GTEST_SKIP() << "`compax tablet` is not registered";
-    }
-
     static std::string
     shipped(const std::string &name)
     {

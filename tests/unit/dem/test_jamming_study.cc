@@ -97,6 +97,7 @@ TEST(JammingStudy, ZeroToughnessKeepsMaterialsAndRemovesBridges)
   r.study_case = {0.0, true};
   write_jamming_csv(csv, "m1", {r});
   EXPECT_EQ(csv.str(),
-            "material,fracture_toughness,protocol,rho_c_Z,Z_c,theta\n"
-            "m1,0,frozen-history,,,\n");
+            "material,fracture_toughness,protocol,rho_c_Z,Z_c,theta,"
+            "rho_jammed,Z_jammed\n"
+            "m1,0,frozen-history,,,,0,0\n");
 }
