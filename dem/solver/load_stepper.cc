@@ -77,11 +77,11 @@ namespace compax::dem
     return loose == 1;
   }
 
-  bool
+  LoadStepper::UnjammedStep
   LoadStepper::relax_unjammed(Bed &bed, LoadStepResult &total)
   {
     if (!(stepping.jamming_pressure > 0.0) || loose != 1)
-      return false;
+      return UnjammedStep::newton;
     const auto       t0 = std::chrono::steady_clock::now();
     const FireResult f  = fire.relax(bed,
                                     model,
@@ -93,13 +93,15 @@ namespace compax::dem
            .count();
     total.fire_iterations += f.iterations;
     total.assemblies += f.assemblies;
-    if (!f.converged || !below_jamming(bed, f.sums))
-      return false;
+    if (!below_jamming(bed, f.sums))
+      return UnjammedStep::newton; // the bed jams in this sub-step
+    if (!f.converged)
+      return UnjammedStep::failed;
     total.last                   = EquilibriumResult{};
     total.last.converged         = true;
     total.last.relative_residual = f.relative_residual;
     total.last.sums              = f.sums;
-    return true;
+    return UnjammedStep::relaxed;
   }
 
   void
@@ -174,15 +176,17 @@ namespace compax::dem
         const DieWalls next = t >= 1.0 ? target : interpolate(start, target, t);
         predict(bed, next);
         bed.walls = next;
-        EquilibriumResult r;
-        total.relaxed = relax_unjammed(bed, total);
+        EquilibriumResult  r;
+        const UnjammedStep u = relax_unjammed(bed, total);
+        total.relaxed        = u == UnjammedStep::relaxed;
         if (total.relaxed)
           r = total.last;
-        else
+        else if (u == UnjammedStep::newton)
           {
             r = newton.solve(bed, model);
             accumulate(total, r);
           }
+        // UnjammedStep::failed: r is not converged; the sub-step is cut.
         if (r.converged)
           {
             last_increment

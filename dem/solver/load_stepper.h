@@ -26,7 +26,8 @@ namespace compax::dem
      * scale of the overlaps while the particles rearrange. The relaxed
      * state is the sub-step's converged state (Eq. 13 is applied to it)
      * unless its punches carry the jamming pressure; then Newton continues
-     * from it.
+     * from it. A relaxation that does not converge in unjammed_iterations
+     * while the bed stays unjammed cuts the sub-step back.
      */
     double jamming_pressure = 0.0;
     /// Relative residual of an unjammed relaxation [-].
@@ -123,9 +124,20 @@ namespace compax::dem
     bool
     below_jamming(const Bed &bed, const ContactSums &sums) const;
 
-    /// Relaxes an unjammed sub-step (see LoadSteppingOptions); true if the
-    /// relaxed bed is its equilibrium.
-    bool
+    /// What relax_unjammed() leaves to do.
+    enum class UnjammedStep
+    {
+      relaxed, ///< the relaxed bed is the sub-step's equilibrium
+      newton,  ///< the bed is (or became) jammed: solve by Newton
+      failed   ///< unjammed, but the relaxation did not converge: cut back
+    };
+
+    /// Relaxes an unjammed sub-step (see LoadSteppingOptions). A
+    /// relaxation that does not converge while the bed stays unjammed
+    /// fails the sub-step rather than handing Newton a bed without
+    /// stiffness along its mechanisms (a smaller sub-step starts closer
+    /// to equilibrium).
+    UnjammedStep
     relax_unjammed(Bed &bed, LoadStepResult &total);
 
     /// Eq. (13) on a converged sub-step; remembers whether it is unjammed.
