@@ -109,7 +109,7 @@ namespace compax::cli
                "stopped early (its rows so far are kept and fitted).\n\n"
                "Built-in default: the die defaults (400 particles of "
                "Material 1), all four cases. Shipped: "
-               "apps/parameters/die_jamming_material{1,2}_6512.prm.";
+               "apps/parameters/jamming_material{1,2}_6512.prm.";
       }
 
       void

@@ -97,10 +97,15 @@ namespace compax::dem
           .count();
     result.records         = die.records();
     result.jamming_density = die.jamming_density();
+    // The first compaction row at or past it (the frozen-history
+    // consolidation ends between two targets).
     for (const DieRecord &r : result.records)
-      if (r.stage == "compaction"
-          && r.relative_density == result.jamming_density)
-        result.jamming_coordination = r.coordination_number;
+      if (r.stage == "compaction" && result.jamming_density > 0.0
+          && r.relative_density >= result.jamming_density)
+        {
+          result.jamming_coordination = r.coordination_number;
+          break;
+        }
     result.fit = fit_jamming(result.records, die.pressure_resolution());
     return result;
   }

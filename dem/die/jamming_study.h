@@ -51,7 +51,8 @@ namespace compax::dem
     /// DieCompaction::jamming_density(): the first state whose punches
     /// carry the jamming pressure (0.5 MPa) [-]; 0 if not reached.
     double jamming_density = 0.0;
-    /// The coordination number of that state [-].
+    /// The coordination number there (frozen-history: of the first load
+    /// step after the consolidation) [-].
     double jamming_coordination = 0.0;
     /// Empty, or why the compaction stopped early (the rows so far are
     /// kept and fitted).
