@@ -5,6 +5,7 @@
 #include "apps/common/gnuplot.h"
 #include "apps/common/material_parameters.h"
 #include "apps/compare/compare_table.h"
+#include "apps/compare/interior_comparison.h"
 #include "apps/die/die_command.h"
 #include "apps/rve/rve_parameters.h"
 #include "apps/tablet/tablet_command.h"
@@ -633,7 +634,9 @@ namespace compax::cli
                                               "poisson_ratio",
                                               "punch_pressure",
                                               "ejection_pressure",
-                                              "fe2_vs_database"};
+                                              "fe2_vs_database",
+                                              "interior_sigma_zz",
+                                              "interior_lateral_ratio"};
       s << "plot ";
       for (std::size_t k = 0; k < names.size(); ++k)
         s << (k ? ", " : "") << "'compare.csv' using (strcol('comparison') eq '"
@@ -690,7 +693,18 @@ namespace compax::cli
                "ejection_pressure (mu times the residual die-wall force "
                "after unloading from the final density over the punch area, "
                "Sec. 5.4, for both), fe2_vs_database (punch pressure of the "
-               "FE2 tablet against the database-mode tablet). Also "
+               "FE2 tablet against the database-mode tablet), "
+               "interior_sigma_zz and interior_lateral_ratio (the die's "
+               "interior, the particles farther than two diameters from "
+               "every wall, against the RVE's uniaxial compaction path at "
+               "the interior's own solid fraction: axial stress, and "
+               "sigma_rr/sigma_zz against the RVE's lateral "
+               "(sigma_xx+sigma_yy)/2 over sigma_zz); those rows also go "
+               "to interior.csv (relative_density_die, "
+               "relative_density_interior, sigma_zz_interior, "
+               "sigma_rr_interior, sigma_zz_rve, sigma_xx_rve; stresses in "
+               "Pa, tension positive; the RVE's empty outside the density "
+               "range of its compaction path). Also "
                "compare.md (setup, per-study status and time, mean and "
                "largest relative differences), compare.png with "
                "compare.gp, and each study's own output and "
@@ -880,6 +894,19 @@ namespace compax::cli
              compare_series("fe2_vs_database", tablet_p, fe2_p, density_reach))
           rows.push_back(r);
 
+        // (d) The die's interior against the RVE at the interior's own
+        // solid fraction.
+        const fs::path rve_rows
+          = folder / database.folder / "database" / "database.csv";
+        if (fs::is_regular_file(rve_rows) && die_csv.has("rho_interior"))
+          {
+            const std::vector<InteriorRow> interior
+              = compare_interior(die_csv, CsvTable(rve_rows));
+            write_interior_csv(folder / "interior.csv", interior);
+            for (auto &r : interior_comparison_rows(interior))
+              rows.push_back(r);
+          }
+
         write_comparison_csv(folder / "compare.csv", rows);
         plot(folder, fe2.ran && !fe2_p.x.empty());
 
@@ -905,7 +932,9 @@ namespace compax::cli
                               "poisson_ratio",
                               "punch_pressure",
                               "ejection_pressure",
-                              "fe2_vs_database"})
+                              "fe2_vs_database",
+                              "interior_sigma_zz",
+                              "interior_lateral_ratio"})
           summarize(md, rows, n);
         if (fe2.ran && fe2.code != success)
           md << "\nThe FE2 tablet stopped (" << fe2.message

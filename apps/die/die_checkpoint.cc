@@ -54,6 +54,9 @@ namespace compax::cli
       visit(r.cg_iterations);
       visit(r.cutbacks);
       visit(r.relaxed);
+      visit(r.rho_interior);
+      visit(r.sigma_zz_interior);
+      visit(r.sigma_rr_interior);
       // Not the timing (wall_seconds): the same study gives the same
       // checkpoint.
     }

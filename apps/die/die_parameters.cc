@@ -267,6 +267,18 @@ namespace compax::cli
       "deformation or bridges, until the punch carries 0.5 MPa; Eq. 13 "
       "applies only from there on, and compaction targets below that "
       "density are skipped.");
+    prm.declare_entry(
+      "Unjammed equilibrium",
+      "relaxation",
+      dealii::Patterns::Selection("relaxation|relaxation+newton"),
+      "Bonded path (Consolidation = none) only: the converged state of a "
+      "step while the punches carry less than 0.5 MPa. relaxation: the FIRE "
+      "relaxation at fixed internal variables, balanced to 1e-2 of the mean "
+      "contact force or below the force resolution. relaxation+newton: the "
+      "relaxation is followed by the trust-region Newton to the Solver "
+      "tolerances (a step whose Newton fails is cut back), so loose states "
+      "balance as tightly as jammed ones; slower where Newton has little "
+      "stiffness to work with.");
     prm.declare_entry("Maximum ejection steps",
                       "40",
                       dealii::Patterns::Integer(1, 100000),
@@ -442,9 +454,11 @@ namespace compax::cli
     protocol.eject               = prm.get_bool("Eject");
     protocol.friction_coefficient
       = prm.get_double("Die-wall friction coefficient");
-    protocol.ejection_step       = prm.get_double("Ejection step");
-    protocol.max_ejection_steps  = prm.get_integer("Maximum ejection steps");
-    protocol.consolidate         = prm.get("Consolidation") == "frozen-history";
+    protocol.ejection_step      = prm.get_double("Ejection step");
+    protocol.max_ejection_steps = prm.get_integer("Maximum ejection steps");
+    protocol.consolidate        = prm.get("Consolidation") == "frozen-history";
+    protocol.newton_after_relaxation
+      = prm.get("Unjammed equilibrium") == "relaxation+newton";
     protocol.checkpoint_interval = prm.get_integer("Checkpoint interval");
     protocol.stop_after      = prm.get_integer("Stop after compaction steps");
     const std::string resume = prm.get("Resume from");

@@ -22,6 +22,42 @@ namespace compax::dem
         .count();
     }
 
+    /// Restores a stream's format (flags, precision) when it goes out of
+    /// scope: the progress stream is the caller's (often std::cout), and
+    /// the protocol's progress lines must not leave it at precision 1.
+    class FormatGuard
+    {
+    public:
+      explicit FormatGuard(std::ostream *stream)
+          : stream(stream)
+      {
+        if (stream)
+          {
+            flags     = stream->flags();
+            precision = stream->precision();
+          }
+      }
+
+      ~FormatGuard()
+      {
+        if (stream)
+          {
+            stream->flags(flags);
+            stream->precision(precision);
+          }
+      }
+
+      FormatGuard(const FormatGuard &) = delete;
+      FormatGuard &
+      operator=(const FormatGuard &)
+        = delete;
+
+    private:
+      std::ostream           *stream;
+      std::ios_base::fmtflags flags{};
+      std::streamsize         precision = 0;
+    };
+
     /// Punch gap at which the bed reaches in-die relative density rho.
     double
     gap_for(const Bed &bed, const double rho)
@@ -158,11 +194,12 @@ namespace compax::dem
     LoadSteppingOptions stepping;
     if (!protocol.consolidate)
       {
-        const ConsolidationOptions &c = protocol.consolidation;
-        stepping.jamming_pressure     = c.jamming_pressure;
-        stepping.unjammed_tolerance   = c.relative_tolerance;
-        stepping.unjammed_iterations  = c.max_relaxation_iterations;
-        stepping.force_resolution     = force_resolution();
+        const ConsolidationOptions &c    = protocol.consolidation;
+        stepping.jamming_pressure        = c.jamming_pressure;
+        stepping.unjammed_tolerance      = c.relative_tolerance;
+        stepping.unjammed_iterations     = c.max_relaxation_iterations;
+        stepping.force_resolution        = force_resolution();
+        stepping.newton_after_relaxation = protocol.newton_after_relaxation;
       }
     stepper = std::make_unique<LoadStepper>(model, equilibrium, stepping);
   }
@@ -239,6 +276,14 @@ namespace compax::dem
         d.bonding_surface     = m.bonding_surface;
         d.bonds               = m.n_bonds;
       }
+    const InteriorMeasures interior
+      = measure_interior(bed,
+                         protocol.interior_wall_distance * 2.0
+                           * bed.particles.mean_radius(),
+                         elastic ? 0.0 : force_resolution());
+    d.rho_interior       = interior.relative_density;
+    d.sigma_zz_interior  = interior.sigma_zz;
+    d.sigma_rr_interior  = interior.sigma_rr;
     d.bonds_formed       = r.bonds.formed;
     d.bonds_broken       = r.bonds.broken;
     d.residual           = r.last.relative_residual;
@@ -266,6 +311,7 @@ namespace compax::dem
   void
   DieCompaction::run()
   {
+    const FormatGuard keep_format(progress);
     start_time = now();
     if (csv)
       write_csv_header(*csv);
@@ -393,6 +439,7 @@ namespace compax::dem
   void
   DieCompaction::resume(const DieProgress &from)
   {
+    const FormatGuard keep_format(progress);
     const auto       &targets  = protocol.compaction_targets;
     const std::string mismatch = resume_mismatch(from);
     if (!mismatch.empty())
@@ -427,6 +474,7 @@ namespace compax::dem
   void
   DieCompaction::rerun_branch(const int branch)
   {
+    const FormatGuard keep_format(progress);
     start_time = now();
     if (csv)
       write_csv_header(*csv);
@@ -679,7 +727,8 @@ namespace compax::dem
            "die_wall_pressure,coordination_number,bonding_surface,bonds,"
            "bonds_formed,bonds_broken,elastic_recovery_rho,"
            "elastic_recovery_H,residual_radial_pressure,ejection_pressure,"
-           "residual,iterations,cg_iterations,cutbacks,relaxed\n";
+           "residual,iterations,cg_iterations,cutbacks,relaxed,rho_interior,"
+           "sigma_zz_interior,sigma_rr_interior\n";
   }
 
   void
@@ -697,7 +746,8 @@ namespace compax::dem
         << r.elastic_recovery_H << ',' << r.residual_radial_pressure << ','
         << r.ejection_pressure << ',' << r.residual << ',' << r.iterations
         << ',' << r.cg_iterations << ',' << r.cutbacks << ',' << r.relaxed
-        << '\n';
+        << ',' << r.rho_interior << ',' << r.sigma_zz_interior << ','
+        << r.sigma_rr_interior << '\n';
     out.precision(old);
   }
 } // namespace compax::dem

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "dem/die/die_analysis.h"
+#include "dem/die/die_interior.h"
 #include "dem/nonlocal/elastic_die_stepper.h"
 #include "dem/solver/consolidation.h"
 #include "dem/solver/load_stepper.h"
@@ -63,6 +64,13 @@ namespace compax::dem
      */
     bool                 consolidate = false;
     ConsolidationOptions consolidation;
+    /// Bonded path: an unjammed step's converged relaxation is followed by
+    /// the trust-region Newton to the solver tolerances
+    /// (LoadSteppingOptions::newton_after_relaxation), so that loose states
+    /// balance as tightly as jammed ones; false: the relaxed state is the
+    /// step's converged state (balanced to consolidation.relative_tolerance
+    /// or the force resolution).
+    bool newton_after_relaxation = false;
     /// Elastic frictionless spheres instead of the ContactModel's bonded
     /// elasto-plastic law: Hertz, or the nonlocal contact formulation of
     /// Gonzalez & Cuitino 2012 (elastic->nonlocal), stepped by an
@@ -71,6 +79,11 @@ namespace compax::dem
     /// coordination number counts the loaded particle pairs. Empty: the
     /// ContactModel's law (LoadStepper, TrustRegionNewton).
     std::optional<ElasticDieOptions> elastic;
+    /// The interior of the compact, whose stress and solid fraction die.csv
+    /// reports beside the die averages (measure_interior()): the particles
+    /// farther than this many mean particle diameters from the die wall and
+    /// both punches [-].
+    double interior_wall_distance = 2.0;
     /// Also write a progress line per unloading and ejection step.
     bool verbose = false;
     /// Hand a checkpoint (DieCompaction::on_checkpoint) every this many
@@ -120,6 +133,12 @@ namespace compax::dem
     /// (DieCompaction::force_resolution()); 0: a Newton solution to the
     /// Solver tolerances (or a record without a solve).
     int relaxed = 0;
+    /// Solid fraction and axial and radial Love-Weber stress (tension
+    /// positive) of the interior (DieProtocol::interior_wall_distance,
+    /// measure_interior()) [-], [Pa], [Pa]; NaN where it holds no particle.
+    double rho_interior      = 0.0;
+    double sigma_zz_interior = 0.0;
+    double sigma_rr_interior = 0.0;
     /// Wall time since the run (or its resumption) started [s]: not in
     /// die.csv (two runs of one study give the same file), the app writes
     /// it to timing.csv.

@@ -104,6 +104,21 @@ namespace compax::dem
     return UnjammedStep::relaxed;
   }
 
+  EquilibriumResult
+  LoadStepper::solve_substep(Bed &bed, LoadStepResult &total)
+  {
+    const UnjammedStep u = relax_unjammed(bed, total);
+    total.relaxed
+      = u == UnjammedStep::relaxed && !stepping.newton_after_relaxation;
+    if (total.relaxed)
+      return total.last;
+    if (u == UnjammedStep::failed)
+      return EquilibriumResult{}; // not converged: the sub-step is cut
+    const EquilibriumResult r = newton.solve(bed, model);
+    accumulate(total, r);
+    return r;
+  }
+
   void
   LoadStepper::commit(Bed &bed, const ContactSums &sums, LoadStepResult &total)
   {
@@ -150,11 +165,12 @@ namespace compax::dem
   LoadStepResult
   LoadStepper::equilibrate(Bed &bed)
   {
-    LoadStepResult          total;
-    const EquilibriumResult r = newton.solve(bed, model);
-    accumulate(total, r);
-    total.substeps  = 1;
-    total.converged = r.converged;
+    LoadStepResult total;
+    if (stepping.jamming_pressure > 0.0)
+      unjammed(bed);
+    const EquilibriumResult r = solve_substep(bed, total);
+    total.substeps            = 1;
+    total.converged           = r.converged;
     if (r.converged)
       commit(bed, r.sums, total);
     return total;
@@ -175,18 +191,8 @@ namespace compax::dem
         saved               = bed;
         const DieWalls next = t >= 1.0 ? target : interpolate(start, target, t);
         predict(bed, next);
-        bed.walls = next;
-        EquilibriumResult  r;
-        const UnjammedStep u = relax_unjammed(bed, total);
-        total.relaxed        = u == UnjammedStep::relaxed;
-        if (total.relaxed)
-          r = total.last;
-        else if (u == UnjammedStep::newton)
-          {
-            r = newton.solve(bed, model);
-            accumulate(total, r);
-          }
-        // UnjammedStep::failed: r is not converged; the sub-step is cut.
+        bed.walls                 = next;
+        const EquilibriumResult r = solve_substep(bed, total);
         if (r.converged)
           {
             last_increment

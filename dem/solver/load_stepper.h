@@ -32,6 +32,18 @@ namespace compax::dem
     double jamming_pressure = 0.0;
     /// Relative residual of an unjammed relaxation [-].
     double unjammed_tolerance = 1e-2;
+    /**
+     * true: a converged unjammed relaxation is the start of a trust-region
+     * Newton solve to EquilibriumOptions' tolerances, and the Newton
+     * solution (not the relaxed state) is the sub-step's converged state;
+     * a Newton solve that fails cuts the sub-step back. The relaxation
+     * removes the large rearrangements Newton cannot follow, the loaded
+     * contacts (bridged ones pull too) give Newton its stiffness, and
+     * Steihaug-CG stops at the trust-region boundary along the mechanisms
+     * that have none, so loose states balance to the same tolerance as
+     * jammed ones. false: the relaxed state is the converged state.
+     */
+    bool newton_after_relaxation = false;
     /// FIRE iterations allowed per unjammed relaxation.
     int unjammed_iterations = 50000;
     /**
@@ -94,7 +106,8 @@ namespace compax::dem
     LoadStepResult
     advance(Bed &bed, const DieWalls &target);
 
-    /// Equilibrium at the current walls, then history update.
+    /// Equilibrium at the current walls, then history update; an unjammed
+    /// bed is relaxed as in advance() (a rerun of a loose saved state).
     LoadStepResult
     equilibrate(Bed &bed);
 
@@ -139,6 +152,11 @@ namespace compax::dem
     /// to equilibrium).
     UnjammedStep
     relax_unjammed(Bed &bed, LoadStepResult &total);
+
+    /// The equilibrium of one sub-step at the current walls: the unjammed
+    /// relaxation, else Newton; not converged when either fails.
+    EquilibriumResult
+    solve_substep(Bed &bed, LoadStepResult &total);
 
     /// Eq. (13) on a converged sub-step; remembers whether it is unjammed.
     void

@@ -3,6 +3,8 @@
 // Runs the real `compax` executable in a fresh folder and reads what it
 // wrote, for the application tests.
 
+#include "tests/support/temporary_folder.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,28 +31,11 @@ namespace compax::testing
     std::string err;
   };
 
-  /// A fresh working folder per test, removed afterwards.
-  class AppTest : public ::testing::Test
+  /// A fresh working folder per test (TemporaryFolderTest's), removed
+  /// afterwards, in which the executable runs.
+  class AppTest : public TemporaryFolderTest
   {
   protected:
-    void
-    SetUp() override
-    {
-      const auto *info
-        = ::testing::UnitTest::GetInstance()->current_test_info();
-      folder = std::filesystem::temp_directory_path()
-               / ("compax-app-" + std::string(info->test_suite_name()) + "-"
-                  + info->name() + "-" + std::to_string(::getpid()));
-      std::filesystem::remove_all(folder);
-      std::filesystem::create_directories(folder);
-    }
-
-    void
-    TearDown() override
-    {
-      std::filesystem::remove_all(folder);
-    }
-
     /// Runs `compax <arguments>` in the test folder.
     RunResult
     compax(const std::string &arguments) const
@@ -180,7 +165,8 @@ namespace compax::testing
       return names;
     }
 
-    std::filesystem::path folder;
+    /// The test folder (the working directory of every run).
+    const std::filesystem::path &folder = dir;
   };
 
   /// A die study of a few seconds: 60 particles in a 2 mm die, 7

@@ -9,6 +9,7 @@
 #include "app_test_support.h"
 
 #include "apps/compare/compare_table.h"
+#include "apps/compare/interior_comparison.h"
 
 #include <cmath>
 #include <set>
@@ -135,6 +136,68 @@ TEST(CompareTable, CsvHasTheIssueColumnsAndEmptyMissingCells)
 
 using CompareCommand = AppTest;
 
+/// interior.csv: the RVE's compaction path (linear in rho here, with rows
+/// of other paths that must be ignored) interpolated at the interior's own
+/// solid fraction, not the die average; die rows without an interior, of
+/// unloading or of a branch are left out; outside the RVE's range the RVE
+/// cells are empty and its comparison rows have no value.
+TEST_F(CompareCommand, InteriorRowsTakeTheRveAtTheInteriorDensity)
+{
+  write("die.csv",
+        "stage,branch,relative_density,rho_interior,sigma_zz_interior,"
+        "sigma_rr_interior\n"
+        "compaction,0,0.55,nan,nan,nan\n"
+        "compaction,0,0.70,0.74,-2e6,-1e6\n"
+        "compaction,0,0.80,0.83,-8e6,-5e6\n"
+        "unloading,1,0.79,0.82,-1e6,-3e6\n"
+        "compaction,0,0.90,0.95,-3e7,-2e7\n");
+  // sigma_zz = -1e8 (rho - 0.6), lateral -4e7 (rho - 0.6) on compaction.
+  write("database.csv",
+        "branch,path,relative_density,sigma_xx,sigma_yy,sigma_zz\n"
+        "-1,compaction,0.6,0,0,0\n"
+        "0,unloading,0.7,9,9,9\n"
+        "-1,compaction,0.9,-1.4e7,-1e7,-3e7\n");
+  using namespace compax::cli;
+  const auto rows = compare_interior(CsvTable(folder / "die.csv"),
+                                     CsvTable(folder / "database.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_DOUBLE_EQ(rows[0].relative_density_die, 0.70);
+  EXPECT_DOUBLE_EQ(rows[0].relative_density_interior, 0.74);
+  EXPECT_NEAR(rows[0].sigma_zz_rve, -1e8 * (0.74 - 0.6), 1e-6);
+  EXPECT_NEAR(rows[0].sigma_xx_rve, -4e7 * (0.74 - 0.6), 1e-6);
+  EXPECT_NEAR(rows[1].sigma_zz_rve, -1e8 * (0.83 - 0.6), 1e-6);
+  EXPECT_TRUE(std::isnan(rows[2].sigma_zz_rve)); // 0.95 > 0.9
+
+  const auto  cmp = interior_comparison_rows(rows);
+  std::size_t zz = 0, ratio = 0;
+  for (const ComparisonRow &c : cmp)
+    {
+      if (c.comparison == "interior_sigma_zz")
+        ++zz;
+      if (c.comparison == "interior_lateral_ratio"
+          && c.relative_density == 0.83)
+        {
+          ++ratio;
+          EXPECT_DOUBLE_EQ(c.reference, 5.0 / 8.0);
+          EXPECT_NEAR(c.value, 0.4, 1e-12);
+        }
+    }
+  EXPECT_EQ(zz, 3u);
+  EXPECT_EQ(ratio, 1u);
+
+  write_interior_csv(folder / "interior.csv", rows);
+  const Csv csv(folder / "interior.csv");
+  EXPECT_EQ(csv.header,
+            (std::vector<std::string>{"relative_density_die",
+                                      "relative_density_interior",
+                                      "sigma_zz_interior",
+                                      "sigma_rr_interior",
+                                      "sigma_zz_rve",
+                                      "sigma_xx_rve"}));
+  ASSERT_EQ(csv.rows(), 3u);
+  EXPECT_EQ(csv.text.at("sigma_zz_rve")[2], "");
+}
+
 TEST_F(CompareCommand, TinyStudyComparesTheSameDieAndMaterial)
 {
   write("tiny.prm", tiny);
@@ -156,7 +219,33 @@ TEST_F(CompareCommand, TinyStudyComparesTheSameDieAndMaterial)
                                    "poisson_ratio",
                                    "punch_pressure",
                                    "ejection_pressure",
-                                   "fe2_vs_database"}));
+                                   "fe2_vs_database",
+                                   "interior_sigma_zz",
+                                   "interior_lateral_ratio"}));
+  // The interior rows are interior.csv's (those whose interior carries a
+  // stress: a relative difference needs one): reference the die interior's
+  // sigma_zz at its own density, value the RVE's there (empty where the
+  // interior is denser than the RVE's compaction path reached).
+  const Csv                interior(out / "interior.csv");
+  std::vector<std::size_t> loaded_interior;
+  for (std::size_t j = 0; j < interior.rows(); ++j)
+    if (interior.column.at("sigma_zz_interior")[j] != 0.0)
+      loaded_interior.push_back(j);
+  std::size_t n_interior = 0;
+  for (std::size_t k = 0; k < table.rows(); ++k)
+    if (table.text.at("comparison")[k] == "interior_sigma_zz")
+      {
+        ASSERT_LT(n_interior, loaded_interior.size());
+        const std::size_t j = loaded_interior[n_interior++];
+        EXPECT_EQ(table.column.at("relative_density")[k],
+                  interior.column.at("relative_density_interior")[j]);
+        EXPECT_EQ(table.column.at("reference")[k],
+                  interior.column.at("sigma_zz_interior")[j]);
+        EXPECT_EQ(table.text.at("value")[k],
+                  interior.text.at("sigma_zz_rve")[j]);
+      }
+  EXPECT_EQ(n_interior, loaded_interior.size());
+  EXPECT_GT(n_interior, 3u);
   // relative_difference = (value - reference)/|reference| where there is a
   // value; empty where there is none (FE2 was not run).
   for (std::size_t k = 0; k < table.rows(); ++k)
@@ -167,6 +256,8 @@ TEST_F(CompareCommand, TinyStudyComparesTheSameDieAndMaterial)
           EXPECT_EQ(table.text.at("value")[k], "") << k;
           continue;
         }
+      if (name.rfind("interior_", 0) == 0 && table.text.at("value")[k].empty())
+        continue;
       ASSERT_NE(table.text.at("value")[k], "") << name << " row " << k;
       const double ref = table.column.at("reference")[k];
       const double val = table.column.at("value")[k];
