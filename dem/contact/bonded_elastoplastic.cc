@@ -1,6 +1,7 @@
 #include "dem/contact/bonded_elastoplastic.h"
 
 #include "dem/contact/pair_properties.h"
+#include "dem/numbers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,11 +9,6 @@
 
 namespace compax::dem
 {
-  namespace
-  {
-    constexpr double pi = 3.14159265358979323846;
-  }
-
   BondedElastoplasticLaw::BondedElastoplasticLaw(const PairConstants &constants)
       : k(constants)
       , c2(1.43 * std::exp(-0.97 / constants.plastic_exponent))

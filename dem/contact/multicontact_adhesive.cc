@@ -1,6 +1,7 @@
 #include "dem/contact/multicontact_adhesive.h"
 
 #include "dem/contact/pair_properties.h"
+#include "dem/numbers.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,11 +10,6 @@
 
 namespace compax::dem
 {
-  namespace
-  {
-    constexpr double pi = 3.14159265358979323846;
-  }
-
   MulticontactAdhesiveLaw::MulticontactAdhesiveLaw(
     const double      effective_radius,
     const double      effective_modulus,

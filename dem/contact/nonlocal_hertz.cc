@@ -1,17 +1,13 @@
 #include "dem/contact/nonlocal_hertz.h"
 
 #include "dem/contact/pair_properties.h"
+#include "dem/numbers.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace compax::dem
 {
-  namespace
-  {
-    constexpr double pi = 3.14159265358979323846;
-  }
-
   double
   nonlocal_compliance(const double theta,
                       const double R,

@@ -1,5 +1,7 @@
 #include "dem/crystals/granular_crystal.h"
 
+#include "dem/numbers.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -8,8 +10,6 @@ namespace compax::dem
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
-
     struct NamedConfiguration
     {
       CrystalConfiguration configuration;

@@ -1,5 +1,7 @@
 #include "dem/die/die_compaction.h"
 
+#include "dem/numbers.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -12,8 +14,6 @@ namespace compax::dem
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
-
     double
     now()
     {

@@ -1,5 +1,7 @@
 #include "dem/die/die_interior.h"
 
+#include "dem/numbers.h"
+
 #include <Eigen/Core>
 
 #include <cmath>
@@ -10,8 +12,6 @@ namespace compax::dem
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
-
     /// The force of a contact below the resolution counts as zero, as in
     /// measure(): the solve determines no force there.
     double

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "dem/contact/multicontact_adhesive.h"
+#include "dem/numbers.h"
 
 #include <Eigen/Core>
 
@@ -75,8 +76,7 @@ namespace compax::dem
                      const double youngs_modulus,
                      const double poisson_ratio)
   {
-    constexpr double pi = 3.14159265358979323846;
-    const double     G  = shear_modulus(youngs_modulus, poisson_ratio);
+    const double G = shear_modulus(youngs_modulus, poisson_ratio);
     return pi * radius * std::sqrt(density / G)
            / (0.1631 * poisson_ratio + 0.8766);
   }

@@ -2,6 +2,7 @@
 
 #include "dem/contact/pair_properties.h"
 #include "dem/dynamics/restitution_damping.h"
+#include "dem/numbers.h"
 
 #include <Eigen/Geometry>
 
@@ -14,8 +15,6 @@ namespace compax::dem
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
-
     /// What the contact resolution needs to know about one contact.
     struct ContactInput
     {

@@ -1,6 +1,7 @@
 #include "dem/nonlocal/elastic_die_stepper.h"
 
 #include "dem/nonlocal/nonlocal_coordination.h"
+#include "dem/numbers.h"
 #include "dem/solver/fire_relaxation.h"
 #include "dem/solver/trust_region_newton.h"
 
@@ -12,8 +13,6 @@ namespace compax::dem
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
-
     /// Maps the particles affinely from walls a to walls b: heights between
     /// the punches, radial positions with the die (when present in both).
     void

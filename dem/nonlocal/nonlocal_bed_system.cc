@@ -1,6 +1,7 @@
 #include "dem/nonlocal/nonlocal_bed_system.h"
 
 #include "dem/contact/pair_properties.h"
+#include "dem/numbers.h"
 #include "dem/solver/die_bed_system.h"
 #include "dem/solver/pair_block.h"
 
@@ -12,8 +13,6 @@ namespace compax::dem
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
-
     template <typename Key>
     bool
     less(const Key &a, const Key &b)

@@ -1,14 +1,11 @@
 #include "dem/particles/particle_system.h"
 
+#include "dem/numbers.h"
+
 #include <algorithm>
 
 namespace compax::dem
 {
-  namespace
-  {
-    constexpr double pi = 3.14159265358979323846;
-  }
-
   void
   ParticleSystem::add(const Eigen::Vector3d &x,
                       const double           radius,

@@ -1,5 +1,6 @@
 #include "dem/periodic/random_insertion.h"
 
+#include "dem/numbers.h"
 #include "dem/periodic/periodic_cell.h"
 
 #include <algorithm>
@@ -12,7 +13,6 @@ namespace compax::dem
   InsertedParticles
   insert_random(const InsertionSpec &spec, RandomSource &random)
   {
-    constexpr double pi = 3.14159265358979323846;
     if (!(spec.packing_density > 0.0 && spec.packing_density < 1.0))
       throw std::invalid_argument("insertion: packing density not in (0, 1)");
     InsertedParticles result;

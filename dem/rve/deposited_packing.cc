@@ -1,5 +1,6 @@
 #include "dem/rve/deposited_packing.h"
 
+#include "dem/numbers.h"
 #include "dem/packing/ballistic_deposition.h"
 
 #include <algorithm>
@@ -11,8 +12,6 @@ namespace compax::dem
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
-
     /// Mean sphere volume of a size distribution, from 4096 draws of an
     /// independent stream (exact when monodisperse) [m^3].
     double

@@ -1,6 +1,7 @@
 #include "dem/rve/nonlocal_rve_loading.h"
 
 #include "dem/nonlocal/nonlocal_coordination.h"
+#include "dem/numbers.h"
 #include "dem/solver/trust_region_newton.h"
 
 #include <algorithm>
@@ -8,11 +9,6 @@
 
 namespace compax::dem
 {
-  namespace
-  {
-    constexpr double pi = 3.14159265358979323846;
-  }
-
   NonlocalRveLoading::NonlocalRveLoading(NonlocalRveOptions options)
       : opts(std::move(options))
       , solver(opts.solver, opts.krylov)

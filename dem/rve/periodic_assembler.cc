@@ -1,5 +1,6 @@
 #include "dem/rve/periodic_assembler.h"
 
+#include "dem/numbers.h"
 #include "dem/solver/contact_assembler.h"
 #include "dem/solver/pair_block.h"
 
@@ -7,7 +8,6 @@
 
 namespace compax::dem
 {
-
   ContactResponse
   periodic_contact_response(const PeriodicContact &c,
                             const double           gamma,
@@ -17,8 +17,7 @@ namespace compax::dem
     if (branch == ContactBranch::unloading && r.contact_radius > 0.0
         && r.contact_radius >= c.history.a_p)
       {
-        constexpr double pi = 3.14159265358979323846;
-        r.stiffness         = 16.0 * c.law.constants().effective_modulus
+        r.stiffness = 16.0 * c.law.constants().effective_modulus
                       * r.contact_radius / (3.0 * pi);
       }
     return r;

@@ -1,5 +1,6 @@
 #include "dem/rve/periodic_packing.h"
 
+#include "dem/numbers.h"
 #include "dem/rve/periodic_bed_system.h"
 #include "dem/solver/fire_relaxation.h"
 
@@ -13,8 +14,6 @@ namespace compax::dem
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
-
     /// Random sequential addition in a fully periodic cube of edge L; the
     /// largest spheres first.
     std::vector<Eigen::Vector3d>

@@ -1,5 +1,6 @@
 #include "dem/solver/consolidation.h"
 
+#include "dem/numbers.h"
 #include "dem/solver/trust_region_newton.h"
 
 #include <algorithm>
@@ -10,8 +11,6 @@ namespace compax::dem
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
-
     /// Affine map of the heights between the punches of `from` onto `to`.
     void
     map_heights(ParticleSystem &p, const DieWalls &from, const DieWalls &to)

@@ -1,5 +1,6 @@
 #include "dem/solver/contact_assembler.h"
 
+#include "dem/numbers.h"
 #include "dem/solver/pair_block.h"
 
 #include <cmath>
@@ -35,14 +36,13 @@ namespace compax::dem
 
     // Elastic (un)loading and the solid bridge (Eq. 4), as in
     // BondedElastoplasticLaw::response, with a_p^{1/2} by sqrt.
-    constexpr double pi      = 3.14159265358979323846;
-    const double     n_p     = k.plastic_coefficient;
-    const double     a_p     = h.a_p;
-    const double     root_ap = std::sqrt(a_p);
-    const double     gamma_p = a_p * a_p / (2.0 * c2 * R);
-    const double     alpha = 4.0 * k.effective_modulus / (3.0 * n_p * root_ap);
-    const double     recovery = alpha * (gamma_p - gamma);
-    const double     a2       = a_p * a_p - recovery * recovery;
+    const double n_p      = k.plastic_coefficient;
+    const double a_p      = h.a_p;
+    const double root_ap  = std::sqrt(a_p);
+    const double gamma_p  = a_p * a_p / (2.0 * c2 * R);
+    const double alpha    = 4.0 * k.effective_modulus / (3.0 * n_p * root_ap);
+    const double recovery = alpha * (gamma_p - gamma);
+    const double a2       = a_p * a_p - recovery * recovery;
     if (a2 <= 0.0)
       return {};
     const double    a = std::sqrt(a2);

@@ -1,14 +1,11 @@
 #include "dem/walls/die_walls.h"
 
+#include "dem/numbers.h"
+
 #include <cmath>
 
 namespace compax::dem
 {
-  namespace
-  {
-    constexpr double pi = 3.14159265358979323846;
-  }
-
   double
   DieWalls::punch_area() const
   {

@@ -18,8 +18,6 @@ using namespace compax::dem;
 
 namespace
 {
-  const double pi = std::acos(-1.0);
-
   /// Eqs. (6)-(11) with k2* in Eqs. (7), (9), (11) corrected.
   struct PaperLaw
   {
