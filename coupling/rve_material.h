@@ -55,9 +55,11 @@ namespace compax::coupling
       /// consolidated through the same loose densification and its stress
       /// (the jamming pressure) already is the powder's, so keeping the
       /// floor's would count that stage twice, and it would stay in the
-      /// ejected tablet (it barely recovers on unloading: ~0.3 MPa after
-      /// compaction from 0.5 to 0.9 at 1 MPa, of the order of the tablet's
-      /// tensile strength). Once jammed the floor is only a regularisation
+      /// ejected tablet (it barely recovers on unloading: Ef x the summed
+      /// strain increments, -0.4 MPa mean and -0.7 MPa axial after
+      /// uniaxial compaction from 0.5 to 0.9 at 1 MPa, which the RVEs of
+      /// the free tablet balance in tension: of the order of its tensile
+      /// strength). Once jammed the floor is only a regularisation
       /// of the tangent (stress from the RVE alone, tangent RVE + floor):
       /// the continuum Newton is then a modified Newton whose error
       /// contracts by at most Ef / (Ef + E_rve) per iteration (~1e-3 for a

@@ -45,9 +45,10 @@ namespace compax::cli
       "slower by at most the ratio of floor to RVE modulus), so none of its "
       "compaction stress remains in the ejected tablet. accumulated: the "
       "former scheme, the floor's stress integrated over the whole cycle "
-      "and added to the RVE's (~Ef x the compaction's volumetric strain, "
-      "0.3-0.5 MPa at 1 MPa from 0.5 to 0.9, stays in the ejected "
-      "tablet). Unit: -.");
+      "and added to the RVE's (Ef x the summed strain increments, a mean "
+      "stress of -0.4 MPa after uniaxial compaction from 0.5 to 0.9 at "
+      "1 MPa, stays in the ejected tablet, balanced by tension in its "
+      "RVEs). Unit: -.");
     prm.declare_entry("FE2 stress resolution",
                       "1e-3",
                       dealii::Patterns::Double(0.0, 0.1),
