@@ -186,6 +186,12 @@ namespace compax::coupling
     return h[jammed_at] != 0.0;
   }
 
+  dealii::SymmetricTensor<2, 3>
+  RveMaterial::floor_stress(dealii::ArrayView<const double> h)
+  {
+    return fem::load(h, floor_stress_at);
+  }
+
   void
   RveMaterial::catch_up(const std::size_t point,
                         const double      committed_step) const
@@ -318,15 +324,25 @@ namespace compax::coupling
           }
       }
 
-    // The floor is a weak hypoelastic skeleton in parallel with the RVE:
-    // its stress is integrated like any hypoelastic law's, so that stress
-    // and tangent stay consistent.
+    // The floor is a weak hypoelastic skeleton in parallel with the RVE.
+    // While the point is loose its stress is integrated like any
+    // hypoelastic law's (stress and tangent consistent). By default it is
+    // released when the point jams (the jammed packing's stress already is
+    // the powder's, see RveMaterialSpec::FloorStress) and the floor only
+    // regularises the tangent from then on, so that none of its compaction
+    // stress remains in the ejected tablet.
     const double                        Ef = spec.tangent_floor_modulus;
     const dealii::SymmetricTensor<4, 3> floor
       = fem::isotropic_stiffness_tensor(Ef, 0.25);
-    const dealii::SymmetricTensor<2, 3> floor_stress
-      = fem::load(old_h, floor_stress_at) + floor * increment.strain_increment;
-    response.stress  = from_eigen(sigma) + floor_stress;
+    const bool released
+      = jammed
+        && spec.floor_stress
+             == RveMaterialSpec::FloorStress::released_at_jamming;
+    const dealii::SymmetricTensor<2, 3> floor_sigma
+      = released ? dealii::SymmetricTensor<2, 3>()
+                 : fem::load(old_h, floor_stress_at)
+                     + floor * increment.strain_increment;
+    response.stress  = from_eigen(sigma) + floor_sigma;
     response.tangent = from_voigt(C) + floor;
     if (!jammed)
       add_jamming_ramp(increment, rho_old, pooled, response);
@@ -334,7 +350,7 @@ namespace compax::coupling
     for (unsigned int k = 0; k < n_history(); ++k)
       new_h[k] = old_h[k];
     fem::store(response.stress, new_h, stress_at);
-    fem::store(floor_stress, new_h, floor_stress_at);
+    fem::store(floor_sigma, new_h, floor_stress_at);
     new_h[density_at]
       = jammed ? cell.relative_density() : rho_old / volume_ratio;
     // A representative modulus for the contact penalty: the axial entry of

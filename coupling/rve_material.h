@@ -41,12 +41,40 @@ namespace compax::coupling
     /// consolidate `pool_size` packings.
     std::vector<dem::PeriodicBed> pool;
     /// Young's modulus of a weak isotropic hypoelastic skeleton in
-    /// parallel with the RVE [Pa] (its stress and tangent are added): a
-    /// loose cell has no contact network and a zero tangent, which leaves
-    /// the continuum Newton singular; the floor keeps it well-posed and is
-    /// small once the powder is jammed (1 MPa: ~0.5 MPa of stress after
-    /// compaction from 0.5 to 0.9).
+    /// parallel with the RVE [Pa] (Poisson's ratio 0.25): a loose cell has
+    /// no contact network and a zero tangent, which leaves the continuum
+    /// Newton singular; the floor keeps it well-posed. What it adds to the
+    /// stress is set by floor_stress.
     double tangent_floor_modulus = 1e6;
+    /// What the floor contributes to the stress of a point.
+    enum class FloorStress
+    {
+      /// Default. While the point is loose the floor's stress is integrated
+      /// hypoelastically and is the point's stress (with the jamming ramp);
+      /// at the jamming switch it is released: the jammed packing was
+      /// consolidated through the same loose densification and its stress
+      /// (the jamming pressure) already is the powder's, so keeping the
+      /// floor's would count that stage twice, and it would stay in the
+      /// ejected tablet (it barely recovers on unloading: Ef x the summed
+      /// strain increments, -0.4 MPa mean and -0.7 MPa axial after
+      /// uniaxial compaction from 0.5 to 0.9 at 1 MPa, which the RVEs of
+      /// the free tablet balance in tension: of the order of its tensile
+      /// strength). Once jammed the floor is only a regularisation
+      /// of the tangent (stress from the RVE alone, tangent RVE + floor):
+      /// the continuum Newton is then a modified Newton whose error is
+      /// multiplied by at most Ef / (Ef + E_rve) per iteration (~1e-3 for a
+      /// dense RVE, more just after jamming, where the RVEs are soft:
+      /// tablet_fe2_250.prm takes 9 % more Newton iterations, mostly in the
+      /// compaction steps after jamming), and stays well-posed if an RVE loses
+      /// its contacts.
+      released_at_jamming,
+      /// The former scheme: the floor's stress is integrated over the whole
+      /// cycle and added to the RVE's (consistent tangent, but the floor's
+      /// compaction stress, ~Ef x the accumulated volumetric strain, stays
+      /// in the ejected tablet).
+      accumulated
+    };
+    FloorStress floor_stress = FloorStress::released_at_jamming;
     /// Relative accuracy of the homogenized stress the continuum Newton
     /// balances to [-] (MaterialModel::stress_resolution): an RVE's stress
     /// is piecewise smooth, contacts opening, closing or switching between
@@ -81,14 +109,18 @@ namespace compax::coupling
    * of the continuum step strains its cell (H -> (I + deps) H), the
    * fluctuations are equilibrated with frozen internal variables, and the
    * point returns the Love-Weber stress and the condensed tangent of that
-   * trial state, plus those of a weak elastic floor (see the spec).
+   * trial state, plus those of a weak elastic floor (see the spec: by
+   * default the floor carries stress only while the point is loose, and
+   * only its tangent once the point is jammed).
    *
    * Consolidation, as in the die (Gonzalez 2018 §5): a powder below its
    * jamming point has no contact network and carries no stress to speak
    * of, and an RVE there is a gas that Newton cannot equilibrate (FIRE
    * can, at great cost, and the cell shears freely). So a point starts
    * unjammed and carries only the floor while its density (mass balance)
-   * stays below the jamming density of its pool packing; each pool
+   * stays below the jamming density of its pool packing (the floor's
+   * stress is released when the point switches, see
+   * RveMaterialSpec::FloorStress); each pool
    * packing is brought to its jamming pressure once, at start-up, by
    * uniaxial compaction. In the step that crosses it, the point takes a
    * copy of the jammed packing and strains it by the part of the
@@ -187,6 +219,12 @@ namespace compax::coupling
     /// Whether a point's committed state is a jammed RVE.
     static bool
     is_jammed(dealii::ArrayView<const double> history);
+
+    /// The floor's share of a point's stress [Pa] (tension positive; the
+    /// RVE's share is stress() minus it): zero once the point is jammed
+    /// unless RveMaterialSpec::floor_stress is accumulated.
+    static dealii::SymmetricTensor<2, 3>
+    floor_stress(dealii::ArrayView<const double> history);
 
     /// Number of material points (RVEs) created so far.
     std::size_t

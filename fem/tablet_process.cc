@@ -74,7 +74,8 @@ namespace compax::fem
         step.lower_punch_displacement = solver.lower_punch_position();
         step.forces                   = solver.forces();
         step.mean_relative_density    = solver.mean_relative_density();
-        step.newton_iterations        = k == 0 ? 0 : solver.last_iterations();
+        step.mean_stress       = dealii::trace(solver.mean_stress()) / 3.0;
+        step.newton_iterations = k == 0 ? 0 : solver.last_iterations();
         on_step(step);
       };
     if (resume_after == 0)

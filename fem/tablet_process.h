@@ -48,6 +48,13 @@ namespace compax::fem
     TabletForces forces;
     double       mean_relative_density = 0.0;
     unsigned int newton_iterations     = 0;
+    /// Volume-averaged mean stress of the compact, tr(sigma) / 3 over its
+    /// current volume [Pa], tension positive (TabletSolver::mean_stress()).
+    /// In equilibrium it is the virial of the boundary tractions over the
+    /// volume: for the tablet free of the die after ejection it is ~0
+    /// whatever residual stress it holds (its parts, e.g. the FE2 floor's
+    /// and the RVEs', need not be).
+    double mean_stress = 0.0;
   };
 
   /**

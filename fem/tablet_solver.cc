@@ -262,6 +262,17 @@ namespace compax::fem
   dealii::SymmetricTensor<2, 3>
   TabletSolver<dim>::mean_stress() const
   {
+    return volume_average([this](dealii::ArrayView<const double> h) {
+      return material->stress(h);
+    });
+  }
+
+  template <int dim>
+  dealii::SymmetricTensor<2, 3>
+  TabletSolver<dim>::volume_average(
+    const std::function<dealii::SymmetricTensor<2, 3>(
+      dealii::ArrayView<const double>)> &field) const
+  {
     dealii::FEValues<dim>         fv(*mapping,
                              fe,
                              cell_quadrature,
@@ -278,7 +289,7 @@ namespace compax::fem
               const double dV
                 = fv.JxW(q) * measure_weight(fv.quadrature_point(q));
               sum += dV
-                     * material->stress(material_history.committed(
+                     * field(material_history.committed(
                        cell->active_cell_index() * cell_quadrature.size() + q));
               V += dV;
             }

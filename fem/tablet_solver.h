@@ -16,6 +16,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -257,10 +258,24 @@ namespace compax::fem
 
     /**
      * Volume-averaged Cauchy stress [Pa] over the locally owned cells,
-     * summed over ranks: the homogeneous-state tests read it.
+     * summed over ranks, in the current configuration: the
+     * homogeneous-state tests read it, and its trace / 3 is the mean
+     * stress column of tablet.csv. In equilibrium it equals the virial of
+     * the boundary tractions over the volume, so it vanishes for a tablet
+     * free of load (a residual stress field balances itself). Collective.
      */
     dealii::SymmetricTensor<2, 3>
     mean_stress() const;
+
+    /**
+     * Volume average over the current configuration of a tensor @p field
+     * [its unit] of each quadrature point's committed material history
+     * (e.g. a part of the stress that only the material model knows, such
+     * as the FE2 floor's). Collective.
+     */
+    dealii::SymmetricTensor<2, 3>
+    volume_average(const std::function<dealii::SymmetricTensor<2, 3>(
+                     dealii::ArrayView<const double>)> &field) const;
 
     /**
      * Current positions of the mesh vertices on the boundary @p id, from

@@ -13,7 +13,8 @@ namespace compax::cli
   /**
    * Declares the subsection Multiscale of `compax tablet`: the RVE
    * (Material, Bonding, Packing of its particles), the database paths, the
-   * RVE solver, and the FE2 options (Pool size, Tangent floor modulus).
+   * RVE solver, and the FE2 options (Pool size, Tangent floor modulus,
+   * Tangent floor stress, FE2 stress resolution).
    */
   void
   declare_multiscale_parameters(dealii::ParameterHandler &prm);

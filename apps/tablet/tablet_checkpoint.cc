@@ -30,7 +30,7 @@ namespace compax::cli
               f.sliding_fraction,
               s.mean_relative_density,
               double(s.newton_iterations),
-              0.0};
+              s.mean_stress};
     }
 
     fem::TabletStep
@@ -55,6 +55,8 @@ namespace compax::cli
       s.forces.sliding_fraction        = v[10];
       s.mean_relative_density          = v[11];
       s.newton_iterations              = whole(v[12], 1e9);
+      // 0 in checkpoints written before the column existed.
+      s.mean_stress = v[13];
       return s;
     }
   } // namespace

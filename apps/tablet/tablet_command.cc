@@ -640,7 +640,9 @@ namespace compax::cli
       double residual_wall       = 0.0;
       double density_out_of_die  = 0.0;
       double peak_ejection_force = 0.0;
-      bool   ejected             = false;
+      /// tr(sigma) / 3 averaged over the tablet at the end of ejection [Pa].
+      double mean_stress_out_of_die = 0.0;
+      bool   ejected                = false;
     };
 
     /// For an FE2 run, the time its RVEs took (summed and slowest rank)
@@ -729,7 +731,8 @@ namespace compax::cli
                                              "die_wall_friction_force",
                                              "die_wall_contact_area",
                                              "sliding_fraction",
-                                             "newton_iterations"});
+                                             "newton_iterations",
+                                             "mean_stress"});
       std::vector<std::pair<double, std::string>> pvd;
       std::vector<fem::TabletStep>                history;
       Summary                                     summary;
@@ -787,8 +790,9 @@ namespace compax::cli
           {
             summary.peak_ejection_force
               = std::max(summary.peak_ejection_force, ejection_force);
-            summary.density_out_of_die = st.mean_relative_density;
-            summary.ejected            = f.die_wall_normal_force == 0.0;
+            summary.density_out_of_die     = st.mean_relative_density;
+            summary.mean_stress_out_of_die = st.mean_stress;
+            summary.ejected                = f.die_wall_normal_force == 0.0;
           }
         if (root)
           {
@@ -800,7 +804,8 @@ namespace compax::cli
                  << f.upper_punch_force << f.lower_punch_force
                  << f.die_wall_normal_force << f.die_wall_friction_force
                  << f.die_wall_contact_area << f.sliding_fraction
-                 << static_cast<long long>(st.newton_iterations);
+                 << static_cast<long long>(st.newton_iterations)
+                 << st.mean_stress;
             csv->end_row();
           }
         return wall_pressure;
@@ -1015,6 +1020,17 @@ namespace compax::cli
         checkpoint();
       const std::string rve_share
         = rve_time_share(*setup.material, start, comm);
+      // The FE2 floor's share of the final mean stress (the rest is the
+      // RVEs'), collective.
+      const auto *fe2
+        = dynamic_cast<const coupling::RveMaterial *>(setup.material.get());
+      const double floor_mean_stress
+        = fe2 == nullptr ? 0.0
+                         : dealii::trace(solver.volume_average(
+                             [](dealii::ArrayView<const double> h) {
+                               return coupling::RveMaterial::floor_stress(h);
+                             }))
+                             / 3.0;
       if (root)
         {
           std::cout << rve_share;
@@ -1035,7 +1051,13 @@ namespace compax::cli
                       << " N\n  rel. density out of die      "
                       << summary.density_out_of_die
                       << (summary.ejected ? "" : " (tablet still in the die)")
-                      << '\n';
+                      << "\n  mean stress out of die       "
+                      << summary.mean_stress_out_of_die * 1e-6
+                      << " MPa (tr sigma / 3 over the tablet, tension > 0)\n";
+          if (fe2 != nullptr)
+            std::cout << "  FE2 floor's mean stress      "
+                      << floor_mean_stress * 1e-6
+                      << " MPa (the RVEs carry the rest)\n";
           render_png(folder,
                      "tablet.gp",
                      "set datafile separator ','\n"
@@ -1088,8 +1110,13 @@ namespace compax::cli
                "(tables in CSV) or linear elasticity.\n\nWrites tablet.csv "
                "(step,time,stage,punch displacements, upper/lower punch and "
                "mean die-wall pressures, ejection force, mean relative "
-               "density, forces, ...; SI units, pressures positive in "
-               "compression), tablet.pvd with tablet_NNNN.pvtu/vtu fields "
+               "density, forces, ..., newton_iterations, mean_stress: "
+               "tr(sigma) / 3 averaged over the compact's current volume, "
+               "tension positive, which equilibrium makes the boundary "
+               "tractions' virial over the volume, ~0 for the free ejected "
+               "tablet; SI units, pressures positive in compression; the "
+               "summary adds the FE2 floor's share of it), tablet.pvd with "
+               "tablet_NNNN.pvtu/vtu fields "
                "(displacement, relative density, stress, plastic strain) "
                "and the same fields as tablet_NNNN.h5 with tablet.xdmf, "
                "tablet.png (pressures and ejection force against time) with "

@@ -46,6 +46,11 @@ TEST_F(TabletApp, FrictionlessElasticDieGivesUniaxialStrain)
   EXPECT_NEAR(csv.column.at("die_wall_pressure")[1] / (lambda * eps),
               1.0,
               1e-5);
+  // Mean stress, tension positive: -(lambda + 2 mu + 2 lambda) eps / 3.
+  EXPECT_NEAR(csv.column.at("mean_stress")[1]
+                / (-(3 * lambda + 2 * mu) * eps / 3),
+              1.0,
+              1e-5);
 }
 
 TEST_F(TabletApp, WallFrictionFollowsJanssen)
@@ -105,8 +110,15 @@ TEST_F(TabletApp, DpcCycleConservesMassAndEjectsByCoulombFriction)
           << "row " << k;
       }
   EXPECT_GT(checked, 5u);
-  // Out of the die at the end.
+  // Out of the die at the end, and free: its mean stress, the virial of
+  // the tractions on it over its volume, vanishes by equilibrium (to the
+  // Newton tolerance; the compacted one's is tens of MPa), however much
+  // residual stress it holds.
   EXPECT_EQ(csv.column.at("die_wall_normal_force").back(), 0.0);
+  EXPECT_LT(std::abs(csv.column.at("mean_stress").back()),
+            1e-4 * csv.column.at("upper_punch_pressure")[30]);
+  EXPECT_LT(csv.column.at("mean_stress")[30],
+            -0.25 * csv.column.at("upper_punch_pressure")[30]);
   EXPECT_TRUE(std::filesystem::exists(folder / "out" / "tablet.pvd"));
   EXPECT_TRUE(std::filesystem::exists(folder / "out" / "tablet_0020.pvtu"));
 }
@@ -157,7 +169,8 @@ TEST_F(TabletApp, StoppedRunResumesToTheUninterruptedResult)
                     {"upper_punch_pressure",
                      "die_wall_pressure",
                      "ejection_force",
-                     "mean_relative_density"},
+                     "mean_relative_density",
+                     "mean_stress"},
                     0);
 
   // A checkpoint of another punch cycle is refused as bad input.

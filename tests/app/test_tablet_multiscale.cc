@@ -109,7 +109,8 @@ TEST_F(TabletMultiscale, Fe2RunResumedFromItsCheckpointIsTheUninterruptedRun)
                     {"upper_punch_pressure",
                      "lower_punch_pressure",
                      "die_wall_pressure",
-                     "mean_relative_density"},
+                     "mean_relative_density",
+                     "mean_stress"},
                     9);
   // The points were jammed RVEs at the checkpoint (the elastic floor alone
   // carries ~0.5 MPa at this density) and were compacted further after it:
