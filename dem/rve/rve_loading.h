@@ -125,6 +125,15 @@ namespace compax::dem
     bool
     jammed(const PeriodicBed &bed);
 
+    /// Declares the cell jammed for good (bonded path), e.g. a probe or a
+    /// resumed run from a state of a path that has jammed: Newton for every
+    /// sub-step from now on.
+    void
+    set_jammed()
+    {
+      loose = 0;
+    }
+
     /// Force resolution of Eq. (13) and of the unjammed relaxations of the
     /// cell: force_floor_fraction p_jam pi R_mean^2 [N].
     double
