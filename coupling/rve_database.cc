@@ -66,9 +66,12 @@ namespace compax::coupling
                 RveDatabase             &db,
                 const int                branch,
                 const std::string       &path,
-                int                      from)
+                int                      from,
+                const bool               jammed)
     {
       dem::RveLoading loading(model, spec.loading);
+      if (jammed)
+        loading.set_jammed();
       const double    dg = spec.shear_strain / spec.shear_steps;
       Eigen::Matrix3d e  = Eigen::Matrix3d::Zero();
       e(0, 2) = e(2, 0) = 0.5 * dg;
@@ -98,9 +101,12 @@ namespace compax::coupling
                  RveDatabase             &db,
                  const int                branch,
                  const double             k,
-                 int                      from)
+                 int                      from,
+                 const bool               jammed)
     {
-      dem::RveLoading   loading(model, spec.loading);
+      dem::RveLoading loading(model, spec.loading);
+      if (jammed)
+        loading.set_jammed();
       const std::string path = radial_path_name(k);
       // A logarithmic strain increment per step, applied as F <- exp(e) F
       // (diagonal, so exactly): after n steps eps_zz = -n de.
@@ -186,7 +192,8 @@ namespace compax::coupling
       }
     else
       {
-        bed = dem::make_periodic_packing(spec.packing, model);
+        bed = dem::make_rve_packing(
+          spec.packing, model, spec.loading, 2, spec.denser_deposit);
         record(db, -1, "compaction", bed, -1);
       }
     auto loading = std::make_unique<dem::RveLoading>(model, spec.loading);
@@ -229,10 +236,15 @@ namespace compax::coupling
             br.loaded_stress    = db.rows.back().stress;
             PeriodicBed probe   = bed;
 
-            // Axial unloading until the cell carries no axial stress.
+            // Axial unloading until the cell carries no axial stress. The
+            // probes start from states of the compaction path: jammed
+            // (bonded path: for good) if it has jammed.
+            const bool      jammed = loading->jammed(bed);
             dem::RveLoading unloading(model, spec.loading);
-            int             from = last;
-            std::size_t     n    = 0;
+            if (jammed)
+              unloading.set_jammed();
+            int         from = last;
+            std::size_t n    = 0;
             for (; n < 200 && db.rows.back().stress[2] < 0.0; ++n)
               {
                 step(unloading,
@@ -251,8 +263,8 @@ namespace compax::coupling
             br.elastic                = isotropic_projection(
               0.5 * (t.condensed + t.condensed.transpose()));
 
-            br.shear_failure
-              = shear_probe(spec, model, probe, db, b, "shear", unloaded);
+            br.shear_failure = shear_probe(
+              spec, model, probe, db, b, "shear", unloaded, jammed);
             path_done(b, "shear", db, spec.shear_steps);
             PeriodicBed     confined = probe;
             Eigen::Matrix3d v
@@ -260,12 +272,12 @@ namespace compax::coupling
             step(unloading, confined, v, "confinement");
             const int c = record(db, b, "confinement", confined, unloaded);
             path_done(b, "confinement", db, 1);
-            br.confined_shear_failure
-              = shear_probe(spec, model, confined, db, b, "confined_shear", c);
+            br.confined_shear_failure = shear_probe(
+              spec, model, confined, db, b, "confined_shear", c, jammed);
             path_done(b, "confined_shear", db, spec.shear_steps);
             for (const double k : spec.radial_ratios)
               {
-                radial_probe(spec, model, bed, db, b, k, last);
+                radial_probe(spec, model, bed, db, b, k, last, jammed);
                 path_done(b, radial_path_name(k), db, spec.radial_steps);
               }
             db.branches.push_back(br);

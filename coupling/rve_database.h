@@ -5,6 +5,7 @@
 #include "dem/rve/homogenization.h"
 #include "dem/rve/periodic_packing.h"
 #include "dem/rve/rve_loading.h"
+#include "dem/rve/rve_packing.h"
 
 #include <functional>
 #include <string>
@@ -17,6 +18,9 @@ namespace compax::coupling
   {
     dem::PeriodicPackingSpec packing;
     dem::RveLoadingOptions   loading;
+    /// A deposited packing denser than packing.relative_density: rejected
+    /// (dem::DepositDensityError) or compacted from its own density.
+    dem::DenserDeposit denser_deposit = dem::DenserDeposit::reject;
     /// Relative density at which uniaxial compaction stops [-].
     double final_density = 0.85;
     /// Axial logarithmic strain per compaction step [-].

@@ -1,6 +1,7 @@
 #include "coupling/rve_material.h"
 
 #include "dem/rve/periodic_bed_system.h"
+#include "dem/rve/rve_packing.h"
 #include "fem/isotropic_elasticity.h"
 
 #include <chrono>
@@ -125,7 +126,6 @@ namespace compax::coupling
   void
   RveMaterial::consolidate_templates(const double rho) const
   {
-    dem::RveLoading loading(model, spec.loading);
     Eigen::Matrix3d axial_step = Eigen::Matrix3d::Zero();
     axial_step(spec.compaction_axis, spec.compaction_axis)
       = -spec.consolidation_strain_step;
@@ -134,7 +134,14 @@ namespace compax::coupling
         dem::PeriodicPackingSpec p = spec.packing;
         p.relative_density         = rho;
         p.seed                     = spec.packing.seed + k;
-        dem::PeriodicBed cell      = dem::make_periodic_packing(p, model);
+        // A deposit denser than the tablet starts at its own density.
+        dem::PeriodicBed cell = dem::make_rve_packing(p,
+                                                      model,
+                                                      spec.loading,
+                                                      spec.compaction_axis,
+                                                      dem::DenserDeposit::keep);
+        // One loading per packing: jamming is sticky on the bonded path.
+        dem::RveLoading loading(model, spec.loading);
         // Uniaxial consolidation (the die's kinematics) to the jamming
         // pressure; the loading updates the histories on the way.
         while (dem::mean_pressure(cell) < spec.loading.jamming_pressure)

@@ -343,6 +343,9 @@ namespace compax::cli
         const DatabaseStudy      study   = get_database_study(prm);
         const DatabaseRunOptions options = get_run_options(prm);
         prepare_resume(options, study_fingerprint(prm), study.cell.model);
+        // The held-out packing is drawn with the next seed.
+        check_deposit_density(study.spec.packing,
+                              options.held_out_packing ? 2 : 1);
       }
 
       int

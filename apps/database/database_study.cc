@@ -83,7 +83,10 @@ namespace compax::cli
   void
   declare_database_parameters(dealii::ParameterHandler &prm)
   {
-    declare_rve_cell_parameters(prm);
+    // The gas stays the default here: the cap fit of a small deposited
+    // cell on the bonded path can find its compaction state above the
+    // shear line (80 spheres, seed 5).
+    declare_rve_cell_parameters(prm, "compressed-gas");
     declare_database_paths(prm);
     declare_rve_solver_parameters(prm);
   }

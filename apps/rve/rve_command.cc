@@ -5,6 +5,7 @@
 #include "apps/common/csv_writer.h"
 #include "apps/rve/rve_parameters.h"
 #include "apps/rve/rve_run.h"
+#include "dem/rve/rve_packing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,11 +22,34 @@ namespace compax::cli
     dem::PeriodicBed
     pack(const RveStudy &study, const dem::PeriodicPackingSpec &spec)
     {
+      const bool deposited = spec.protocol == dem::PackingProtocol::deposited;
       std::cout << "Packing " << spec.particle_count
                 << " spheres in a periodic cell (" << study.size_description
-                << ", seed " << spec.seed << ") to a relative density of "
-                << spec.relative_density << " ..." << std::endl;
-      dem::PeriodicBed bed = dem::make_periodic_packing(spec, study.model);
+                << ", seed " << spec.seed << ", "
+                << (deposited ? "deposited, compacted uniaxially"
+                              : "compressed gas")
+                << ") to a relative density of " << spec.relative_density
+                << " ..." << std::endl;
+      // Elastic spheres are packed with the bonded law's elastic branch,
+      // virgin: a deposit is compacted with frozen histories.
+      dem::RveLoadingOptions loading = study.loading;
+      if (study.elastic)
+        loading.consolidation = dem::RveConsolidation::frozen_history;
+      dem::PeriodicBed bed;
+      try
+        {
+          bed = dem::make_rve_packing(spec, study.model, loading);
+        }
+      catch (const dem::DepositDensityError &e)
+        {
+          reject_deposit_density(spec, e.deposit_density);
+        }
+      if (deposited)
+        std::cout << "  deposit compacted on the "
+                  << (loading.consolidation == dem::RveConsolidation::none
+                        ? "bonded path"
+                        : "frozen-history path")
+                  << std::endl;
       std::cout << "  cell edge " << bed.cell.lattice()(0, 0) << " m = "
                 << bed.cell.lattice()(0, 0)
                      / (2.0 * bed.particles.mean_radius())
@@ -190,7 +214,9 @@ namespace compax::cli
       description() const override
       {
         return "Packs bonded elasto-plastic spheres in a fully periodic "
-               "cubic cell (compression of a loose gas, virgin histories) "
+               "cell (by default a cell cut from a ballistic deposit, "
+               "compacted uniaxially on the bonded path to the initial "
+               "density; or compression of a loose gas, virgin histories) "
                "and drives the cell along a macroscopic strain path "
                "(uniaxial strain, hydrostatic, or increments from a CSV), "
                "each step a static equilibrium of the fluctuations by "
@@ -239,6 +265,16 @@ namespace compax::cli
             dem::PeriodicBed bed;
             read_rve_checkpoint(study.resume_from, study, bed);
           }
+        else if (study.cell_sizes.empty())
+          check_deposit_density(study.packing);
+        else
+          for (std::size_t k = 0; k < study.cell_sizes.size(); ++k)
+            {
+              dem::PeriodicPackingSpec spec = study.packing;
+              spec.particle_count           = study.cell_sizes[k];
+              spec.seed                     = study.packing.seed + k;
+              check_deposit_density(spec);
+            }
       }
 
       int

@@ -6,6 +6,7 @@
 #include "apps/common/equilibrium_parameters.h"
 #include "apps/common/material_parameters.h"
 #include "dem/periodic/size_distribution_fit.h"
+#include "dem/rve/rve_packing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -197,7 +198,8 @@ namespace compax::cli
   }
 
   void
-  declare_rve_cell_parameters(dealii::ParameterHandler &prm)
+  declare_rve_cell_parameters(dealii::ParameterHandler &prm,
+                              const std::string        &protocol)
   {
     prm.enter_subsection("Material");
     declare_particle_material(prm, material_1);
@@ -262,21 +264,45 @@ namespace compax::cli
                      positive(),
                      "m",
                      "Upper cut-off of the sampled diameters (quantiles).");
+    prm.declare_entry(
+      "Protocol",
+      protocol,
+      dealii::Patterns::Selection("deposited|compressed-gas"),
+      "How the starting packing is made. deposited: a fully periodic cell "
+      "cut from a ballistic deposit (the die's packing algorithm, spheres "
+      "touching without force, virgin, at the deposit's relative density "
+      "rho_dep, 0.48-0.53 measured for 80-1000 equal spheres), compacted by "
+      "uniaxial strain along the deposit's direction of growth (z; the "
+      "axial direction of the tablet model for multiscale materials) with "
+      "the Solver's loading (the bonded path by default: histories grow "
+      "from the first resolved contact force on) to the Initial relative "
+      "density; compax rve and compax database reject an Initial relative "
+      "density below rho_dep (exit 2, naming rho_dep), while compax "
+      "tablet's Multiscale materials (database and FE2 pool) start from "
+      "the deposit itself when it is denser than asked (the tablet's fill). "
+      "compressed-gas: spheres inserted at random at the "
+      "Insertion density and compressed hydrostatically with frozen "
+      "histories to the Initial relative density (virgin). The default is "
+      "deposited in compax rve, compressed-gas in compax database and "
+      "compax tablet's Multiscale subsection (a small deposited cell's cap "
+      "fit can find its compaction state above the shear line).");
     declare_quantity(prm,
                      "Initial relative density",
                      "0.55",
                      open(0.0, 0.74),
                      "-",
-                     "Solid fraction of the virgin packing the path starts "
-                     "from (compression of a loose gas with frozen "
-                     "histories; above ~0.64 it is already loaded).");
+                     "Solid fraction of the packing the path starts from. "
+                     "Protocol = deposited: at least the deposit's own "
+                     "density rho_dep (see Protocol); compressed-gas: any "
+                     "(above ~0.64 the gas packing is already loaded).");
     declare_quantity(prm,
                      "Insertion density",
                      "0.25",
                      open(0.0, 0.38),
                      "-",
                      "Solid fraction at which the spheres are inserted at "
-                     "random before the gas is compressed.");
+                     "random before the gas is compressed (Protocol = "
+                     "compressed-gas).");
     declare_quantity(prm,
                      "Verlet skin",
                      "0.3",
@@ -302,9 +328,26 @@ namespace compax::cli
                      "0.5e6",
                      non_negative(),
                      "Pa",
-                     "Below this mean compressive stress a step relaxes by "
-                     "FIRE with frozen histories (the loose cell has no "
-                     "stiffness for Newton).");
+                     "Below this mean compressive stress -tr(sigma)/3 a step "
+                     "is relaxed by FIRE (the loose cell has no stiffness for "
+                     "Newton), as Consolidation says; 0: every step by "
+                     "Newton.");
+    prm.declare_entry(
+      "Consolidation",
+      "none",
+      dealii::Patterns::Selection("none|frozen-history"),
+      "What happens below the Jamming pressure (as compax die's "
+      "Protocol/Consolidation). none (the bonded path): a sub-step is "
+      "relaxed by FIRE at fixed internal variables to 1e-2 of the mean "
+      "contact force, and that relaxed state is a converged state to which "
+      "the history update of Eq. 13 applies; contact forces below 1e-2 x "
+      "Jamming pressure on a mean cross-section pi R^2 (7.6e-4 N for R = "
+      "220 um and 0.5 MPa) grow no plastic radius and no bridge; once a "
+      "converged state carried the Jamming pressure the cell stays jammed "
+      "(Newton for every later step, unloading included). frozen-history: "
+      "the former shortcut, for comparison: a step that starts below the "
+      "Jamming pressure relaxes with frozen (uncommitted) histories; Eq. 13 "
+      "applies to Newton steps only.");
     prm.leave_subsection();
   }
 
@@ -499,6 +542,9 @@ namespace compax::cli
     s.packing.particle_count    = prm.get_integer("Number of particles");
     s.packing.relative_density  = prm.get_double("Initial relative density");
     s.packing.insertion_density = prm.get_double("Insertion density");
+    s.packing.protocol          = prm.get("Protocol") == "compressed-gas"
+                                    ? dem::PackingProtocol::compressed_gas
+                                    : dem::PackingProtocol::deposited;
     s.packing.skin              = prm.get_double("Verlet skin");
     s.packing.seed = static_cast<std::uint64_t>(prm.get_integer("Seed"));
     const std::string distribution = prm.get("Size distribution");
@@ -559,6 +605,39 @@ namespace compax::cli
     return s;
   }
 
+  void
+  reject_deposit_density(const dem::PeriodicPackingSpec &packing,
+                         const double                    deposit,
+                         const std::string              &prefix)
+  {
+    reject_entry(prefix + "Packing/Initial relative density",
+                 format_number(packing.relative_density),
+                 "lies below the relative density of the deposited cell ("
+                   + format_number(deposit) + " for these particles and seed "
+                   + std::to_string(packing.seed)
+                   + "), which Packing/Protocol = deposited can only compact: "
+                     "allowed ["
+                   + format_number(deposit)
+                   + ", 0.74), or Packing/Protocol = compressed-gas");
+  }
+
+  void
+  check_deposit_density(const dem::PeriodicPackingSpec &packing,
+                        const unsigned int              seeds,
+                        const std::string              &prefix)
+  {
+    if (packing.protocol != dem::PackingProtocol::deposited)
+      return;
+    for (unsigned int k = 0; k < seeds; ++k)
+      {
+        dem::PeriodicPackingSpec p = packing;
+        p.seed                     = packing.seed + k;
+        const double deposit = dem::make_rve_deposit(p).relative_density();
+        if (p.relative_density < deposit)
+          reject_deposit_density(p, deposit, prefix);
+      }
+  }
+
   dem::RveLoadingOptions
   get_rve_loading_options(dealii::ParameterHandler &prm)
   {
@@ -566,6 +645,9 @@ namespace compax::cli
     prm.enter_subsection("Solver");
     get_equilibrium_tolerances(prm, o.equilibrium);
     o.jamming_pressure = prm.get_double("Jamming pressure");
+    o.consolidation    = prm.get("Consolidation") == "frozen-history"
+                           ? dem::RveConsolidation::frozen_history
+                           : dem::RveConsolidation::none;
     prm.leave_subsection();
     return o;
   }

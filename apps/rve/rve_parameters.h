@@ -101,13 +101,34 @@ namespace compax::cli
   declare_rve_bonding_parameters(dealii::ParameterHandler &prm);
 
   /// Declares the subsections Material, Bonding and Packing of a cell
-  /// (shared by `compax rve` and `compax database`).
+  /// (shared by `compax rve` and `compax database`), Packing/Protocol with
+  /// the default `protocol` (deposited or compressed-gas).
   void
-  declare_rve_cell_parameters(dealii::ParameterHandler &prm);
+  declare_rve_cell_parameters(dealii::ParameterHandler &prm,
+                              const std::string        &protocol = "deposited");
 
   /// Reads them; throws InputError naming the entry.
   RveCell
   get_rve_cell(dealii::ParameterHandler &prm);
+
+  /**
+   * Packing/Protocol = deposited: throws InputError naming
+   * `prefix`Packing/Initial relative density if it lies below the density
+   * of the deposited cell of `packing` with seed packing.seed + k for any
+   * k in [0, seeds) (builds the deposits: about a second per 500
+   * spheres). Nothing for compressed-gas.
+   */
+  void
+  check_deposit_density(const dem::PeriodicPackingSpec &packing,
+                        unsigned int                    seeds  = 1,
+                        const std::string              &prefix = "");
+
+  /// The InputError of check_deposit_density() for a deposit of relative
+  /// density `deposit` [-].
+  [[noreturn]] void
+  reject_deposit_density(const dem::PeriodicPackingSpec &packing,
+                         double                          deposit,
+                         const std::string              &prefix = "");
 
   /// Declares the subsection Solver of an RVE driven along a path.
   void

@@ -583,6 +583,18 @@ namespace compax::cli
           snapshot(0);
       }
     const double rho0 = progress.rows.front()[c_rho];
+    // A fresh loading (at the start, after a checkpoint, on resumption)
+    // takes over the sticky jamming of the path so far: jammed if a
+    // recorded state carried the jamming pressure.
+    const auto keep_jammed = [&]() {
+      for (const auto &row : progress.rows)
+        if (row[c_p] >= study.loading.jamming_pressure)
+          {
+            loading->set_jammed();
+            return;
+          }
+    };
+    keep_jammed();
 
     int        step = static_cast<int>(progress.rows.size()) - 1;
     const auto every
@@ -601,6 +613,7 @@ namespace compax::cli
           // Start afresh from the checkpointed state, as a resumed run does.
           bed.contacts.rebuild(bed.particles, bed.cell, model);
           loading = std::make_unique<dem::RveLoading>(model, study.loading);
+          keep_jammed();
           tangent = std::make_unique<dem::TangentCalculator>();
           if (study.elastic)
             elastic = std::make_unique<dem::NonlocalRveLoading>(*study.elastic);

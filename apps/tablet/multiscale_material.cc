@@ -82,7 +82,10 @@ namespace compax::cli
     // What the database and the RVE states depend on.
     const std::string parameters = canonical_parameters(prm, {"Multiscale"});
     prm.enter_subsection("Multiscale");
-    const DatabaseStudy       study = get_database_study(prm, "Multiscale/");
+    DatabaseStudy study = get_database_study(prm, "Multiscale/");
+    // The tablet's fill density may lie below a deposit's: the RVEs then
+    // start from the deposit (see Packing/Protocol).
+    study.spec.denser_deposit = dem::DenserDeposit::keep;
     coupling::RveMaterialSpec fe2;
     fe2.packing               = study.spec.packing;
     fe2.loading               = study.spec.loading;

@@ -9,6 +9,18 @@
 
 namespace compax::dem
 {
+  /// How the starting packing of an RVE is made (make_rve_packing()).
+  enum class PackingProtocol
+  {
+    /// Compression of a random gas with frozen histories
+    /// (make_periodic_packing()).
+    compressed_gas,
+    /// A periodic cell cut from a ballistic deposit
+    /// (make_deposited_packing()), compacted uniaxially on the RVE's
+    /// loading path up to the requested density: the die's loose bed.
+    deposited
+  };
+
   /// A periodic packing to generate.
   struct PeriodicPackingSpec
   {
@@ -26,6 +38,10 @@ namespace compax::dem
     std::uint64_t seed = 1;
     /// Material of every particle (an index of the ContactModel).
     unsigned int material = 0;
+    /// Which packing make_rve_packing() makes (make_periodic_packing() is
+    /// the compressed gas whatever this says); insertion_density is used
+    /// by the compressed gas only.
+    PackingProtocol protocol = PackingProtocol::compressed_gas;
   };
 
   /**

@@ -33,32 +33,73 @@ namespace compax::dem
   {
   }
 
+  double
+  RveLoading::force_resolution(const PeriodicBed &bed) const
+  {
+    const double R = bed.particles.mean_radius();
+    return opts.force_floor_fraction * opts.jamming_pressure * M_PI * R * R;
+  }
+
+  bool
+  RveLoading::jammed(const PeriodicBed &bed)
+  {
+    if (opts.consolidation == RveConsolidation::frozen_history)
+      return mean_pressure(bed) >= opts.jamming_pressure;
+    if (loose < 0)
+      loose = mean_pressure(bed) < opts.jamming_pressure ? 1 : 0;
+    return loose == 0;
+  }
+
   bool
   RveLoading::substep(PeriodicBed           &bed,
                       const Eigen::Matrix3d &F,
                       RveStepResult         &total)
   {
-    const bool jammed = mean_pressure(bed) >= opts.jamming_pressure;
-    total.jammed      = jammed;
-    saved             = bed;
+    const bool frozen = opts.consolidation == RveConsolidation::frozen_history;
+    // The bonded path asks before the predictor moves the particles.
+    const bool unjammed = opts.jamming_pressure > 0.0 && !jammed(bed);
+    total.jammed        = !unjammed;
+    saved               = bed;
     map_affinely(bed, F);
     PeriodicBedSystem system(bed, model, assembler);
-    if (!jammed)
+    // The bonded path resolves forces as the die does; the frozen-history
+    // path keeps its former rule (every force resolved).
+    const double resolution = force_resolution(bed);
+    if (unjammed)
       {
-        // Below jamming: relax with frozen histories (Consolidation's rule).
-        const double R = bed.particles.mean_radius();
-        const double floor
-          = opts.force_floor_fraction * opts.jamming_pressure * M_PI * R * R;
         const FireResult f = fire.relax(system,
                                         opts.fire_tolerance,
                                         opts.fire_iterations,
-                                        floor);
+                                        resolution);
         total.relaxation_iterations += f.iterations;
         total.relative_residual = f.relative_residual;
-        if (f.converged)
-          return true;
-        bed = saved;
-        return false;
+        if (frozen)
+          {
+            // Consolidation's rule: nothing is committed below jamming.
+            if (!f.converged)
+              bed = saved;
+            else
+              total.relaxed = true;
+            return f.converged;
+          }
+        const double p = mean_pressure(bed);
+        if (p < opts.jamming_pressure)
+          {
+            // Still unjammed: the relaxed cell is the sub-step's
+            // equilibrium, unless it did not get there (cut back: a
+            // smaller sub-step starts closer to equilibrium, and Newton
+            // has no stiffness along the mechanisms of a loose cell).
+            if (!f.converged)
+              {
+                bed = saved;
+                return false;
+              }
+            commit(bed, p, resolution, total);
+            total.relaxed = true;
+            return true;
+          }
+        // The cell jams in this sub-step: Newton finishes from the relaxed
+        // state.
       }
     const EquilibriumResult r = newton.solve(system);
     total.iterations += r.iterations;
@@ -69,11 +110,28 @@ namespace compax::dem
         bed = saved;
         return false;
       }
+    commit(bed, mean_pressure(bed), frozen ? 0.0 : resolution, total);
+    total.relaxed = false;
+    return true;
+  }
+
+  void
+  RveLoading::commit(PeriodicBed   &bed,
+                     const double   pressure,
+                     const double   resolution,
+                     RveStepResult &total)
+  {
     const BondChanges b
-      = bed.contacts.update_histories(bed.particles, bed.cell);
+      = bed.contacts.update_histories(bed.particles, bed.cell, resolution);
     total.bonds.formed += b.formed;
     total.bonds.broken += b.broken;
-    return true;
+    if (opts.consolidation == RveConsolidation::frozen_history)
+      return;
+    // A cell that has jammed once stays a solid: its unloading is a
+    // static equilibrium solved by Newton, however small its pressure.
+    if (loose != 0)
+      loose = pressure < opts.jamming_pressure ? 1 : 0;
+    total.jammed = loose == 0;
   }
 
   RveStepResult

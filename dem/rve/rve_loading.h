@@ -10,21 +10,47 @@
 
 namespace compax::dem
 {
+  /// How an RVE below its jamming pressure is driven (the die's
+  /// Protocol/Consolidation, see DieProtocol::consolidate).
+  enum class RveConsolidation
+  {
+    /**
+     * The bonded path (Gonzalez 2018, Algorithm 1, as the die follows it):
+     * an unjammed sub-step is relaxed by FIRE at fixed internal variables
+     * and that relaxed state is a converged state, to which Eq. (13) is
+     * applied (no plastic radius, no bridge at contacts whose force is
+     * below the force resolution). Jamming is sticky: once a converged
+     * state carried the jamming pressure, every later sub-step (unloading
+     * included) is solved by Newton, whatever its pressure.
+     */
+    none,
+    /**
+     * The former behaviour, kept for comparison: a sub-step that starts
+     * below the jamming pressure relaxes by FIRE with frozen histories (the
+     * relaxed state is not committed), every forces resolved; not sticky.
+     */
+    frozen_history
+  };
+
   /// Settings of an RVE driven along a strain path.
   struct RveLoadingOptions
   {
     EquilibriumOptions  equilibrium;
     LoadSteppingOptions stepping;
     /// Mean compressive stress -tr(sigma)/3 below which the cell counts as
-    /// not jammed [Pa]: its steps relax by FIRE with frozen histories (no
-    /// plastic work to speak of; Newton has no stiffness to work with).
+    /// not jammed [Pa]: its steps relax by FIRE (Newton has no stiffness
+    /// along the mechanisms of a loose cell); see RveConsolidation.
     double jamming_pressure = 0.5e6;
+    /// What happens below the jamming pressure.
+    RveConsolidation consolidation = RveConsolidation::none;
     /// FIRE iterations allowed per unjammed sub-step.
     int fire_iterations = 20000;
     /// Relative residual an unjammed sub-step relaxes to [-] ...
     double fire_tolerance = 1e-2;
     /// ... or a net force below this fraction of the jamming pressure times
-    /// pi R_mean^2 (forces negligible in absolute terms) [-].
+    /// pi R_mean^2 (forces negligible in absolute terms) [-]. On the bonded
+    /// path this force is also the force resolution of Eq. (13) (the die's
+    /// DieCompaction::force_resolution()).
     double force_floor_fraction = 1e-2;
   };
 
@@ -32,9 +58,16 @@ namespace compax::dem
   struct RveStepResult
   {
     bool converged = false;
-    bool jammed    = true;
-    int  substeps  = 0;
-    int  cutbacks  = 0;
+    /// Whether the cell counted as jammed at the last sub-step (bonded
+    /// path: at its end, sticky; frozen history: at its start).
+    bool jammed = true;
+    /// Whether the last converged sub-step was an unjammed FIRE relaxation
+    /// (balanced to fire_tolerance or the force resolution; committed with
+    /// Eq. 13 on the bonded path, not committed with frozen histories)
+    /// rather than a Newton solve to the equilibrium options.
+    bool relaxed  = false;
+    int  substeps = 0;
+    int  cutbacks = 0;
     /// Newton and conjugate-gradient iterations (jammed sub-steps).
     int iterations    = 0;
     int cg_iterations = 0;
@@ -51,8 +84,14 @@ namespace compax::dem
    * the cell (the predictor), solves for the fluctuations by the die's
    * trust-region Newton at the fixed lattice, and on convergence updates
    * the internal variables (Eq. 13); a failed sub-step is undone and
-   * halved, as LoadStepper does for punches. Below the jamming pressure
-   * the sub-step relaxes by FIRE instead, with histories frozen.
+   * halved, as LoadStepper does for punches (every a_p, a_B of the cell
+   * restored). Below the jamming pressure the sub-step relaxes by FIRE
+   * instead, as RveLoadingOptions::consolidation says: on the bonded path
+   * exactly as LoadStepper's unjammed sub-steps (relaxed state committed
+   * with Eq. 13 at the force resolution; a relaxation that ends at the
+   * jamming pressure is finished by Newton; one that does not converge
+   * while the cell stays unjammed cuts the sub-step back; jammed once,
+   * jammed for good).
    */
   class RveLoading
   {
@@ -79,10 +118,40 @@ namespace compax::dem
       return opts;
     }
 
+    /// Whether the cell counts as jammed: on the bonded path, whether some
+    /// converged state so far carried the jamming pressure (an object that
+    /// has not converged a sub-step yet asks the cell); with frozen
+    /// histories, whether the cell carries it now.
+    bool
+    jammed(const PeriodicBed &bed);
+
+    /// Declares the cell jammed for good (bonded path), e.g. a probe or a
+    /// resumed run from a state of a path that has jammed: Newton for every
+    /// sub-step from now on.
+    void
+    set_jammed()
+    {
+      loose = 0;
+    }
+
+    /// Force resolution of Eq. (13) and of the unjammed relaxations of the
+    /// cell: force_floor_fraction p_jam pi R_mean^2 [N].
+    double
+    force_resolution(const PeriodicBed &bed) const;
+
   private:
     /// One sub-step to F; true if converged (state advanced).
     bool
     substep(PeriodicBed &bed, const Eigen::Matrix3d &F, RveStepResult &total);
+
+    /// Eq. (13) on a converged sub-step at forces resolved to `resolution`
+    /// [N]; on the bonded path remembers whether the cell, at mean pressure
+    /// `pressure` [Pa] before the update, is still unjammed.
+    void
+    commit(PeriodicBed   &bed,
+           double         pressure,
+           double         resolution,
+           RveStepResult &total);
 
     const ContactModel &model;
     RveLoadingOptions   opts;
@@ -91,6 +160,8 @@ namespace compax::dem
     FireRelaxation      fire;
     PeriodicBed         saved;
     double              fraction = 1.0;
+    /// Bonded path: whether the cell is still unjammed; -1: not known yet.
+    int loose = -1;
   };
 
   /// Logarithmic (Hencky) strain ln(V) of F = V R, 1/2 ln(F F^T) [-].

@@ -171,8 +171,16 @@ TEST(RveDatabase, FittedCapAgainstTrainingAndHeldOutPaths)
 {
   const dem::ContactModel  model = material1();
   std::vector<RveDatabase> rve;
+  // Frozen histories below jamming, as when the bounds below were set: on
+  // the bonded path these 80-sphere gas packings scatter more (compaction
+  // 0.19 instead of 0.15), and a cap off by a factor 0.5 (0.50) no longer
+  // exceeds 3 s.
   for (const std::uint64_t seed : {5, 6, 7})
-    rve.push_back(coupling::build_rve_database(small_spec(seed), model));
+    {
+      coupling::DatabaseSpec spec = small_spec(seed);
+      spec.loading.consolidation  = dem::RveConsolidation::frozen_history;
+      rve.push_back(coupling::build_rve_database(spec, model));
+    }
   // The fitted table; `cap_scale` scales its cap pressures.
   auto table = [&](const double cap_scale) {
     fem::DpcTable t;
