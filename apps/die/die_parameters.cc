@@ -276,7 +276,8 @@ namespace compax::cli
       "relaxation at fixed internal variables, balanced to 1e-2 of the mean "
       "contact force or below the force resolution. relaxation+newton: the "
       "relaxation is followed by the trust-region Newton to the Solver "
-      "tolerances (a step whose Newton fails is cut back), so loose states "
+      "tolerances (from where the relaxation got to, converged or not; a "
+      "step whose Newton fails is cut back), so loose states "
       "balance as tightly as jammed ones; slower where Newton has little "
       "stiffness to work with.");
     prm.declare_entry("Maximum ejection steps",

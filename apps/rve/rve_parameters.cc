@@ -348,6 +348,17 @@ namespace compax::cli
       "the former shortcut, for comparison: a step that starts below the "
       "Jamming pressure relaxes with frozen (uncommitted) histories; Eq. 13 "
       "applies to Newton steps only.");
+    prm.declare_entry(
+      "Unjammed equilibrium",
+      "relaxation",
+      dealii::Patterns::Selection("relaxation|relaxation+newton"),
+      "Consolidation = none only (as compax die's Protocol/Unjammed "
+      "equilibrium): the converged state of a step below the Jamming "
+      "pressure. relaxation: the FIRE relaxation. relaxation+newton: the "
+      "relaxation followed by the trust-region Newton to the Solver "
+      "tolerances (from where the relaxation got to, converged or not; a "
+      "step whose Newton fails is cut back), so loose states "
+      "balance as tightly as jammed ones.");
     prm.leave_subsection();
   }
 
@@ -648,6 +659,8 @@ namespace compax::cli
     o.consolidation    = prm.get("Consolidation") == "frozen-history"
                            ? dem::RveConsolidation::frozen_history
                            : dem::RveConsolidation::none;
+    o.newton_after_relaxation
+      = prm.get("Unjammed equilibrium") == "relaxation+newton";
     prm.leave_subsection();
     return o;
   }

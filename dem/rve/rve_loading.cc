@@ -1,5 +1,6 @@
 #include "dem/rve/rve_loading.h"
 
+#include "dem/numbers.h"
 #include "dem/rve/homogenization.h"
 #include "dem/rve/periodic_bed_system.h"
 
@@ -37,7 +38,7 @@ namespace compax::dem
   RveLoading::force_resolution(const PeriodicBed &bed) const
   {
     const double R = bed.particles.mean_radius();
-    return opts.force_floor_fraction * opts.jamming_pressure * M_PI * R * R;
+    return opts.force_floor_fraction * opts.jamming_pressure * pi * R * R;
   }
 
   bool
@@ -83,7 +84,7 @@ namespace compax::dem
             return f.converged;
           }
         const double p = mean_pressure(bed);
-        if (p < opts.jamming_pressure)
+        if (p < opts.jamming_pressure && !opts.newton_after_relaxation)
           {
             // Still unjammed: the relaxed cell is the sub-step's
             // equilibrium, unless it did not get there (cut back: a
@@ -98,8 +99,14 @@ namespace compax::dem
             total.relaxed = true;
             return true;
           }
-        // The cell jams in this sub-step: Newton finishes from the relaxed
-        // state.
+        if (!f.converged && p < opts.jamming_pressure
+            && !opts.newton_after_relaxation)
+          {
+            bed = saved;
+            return false;
+          }
+        // The cell jams in this sub-step, or Newton balances the relaxed
+        // state: Newton finishes from it.
       }
     const EquilibriumResult r = newton.solve(system);
     total.iterations += r.iterations;

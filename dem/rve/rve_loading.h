@@ -43,6 +43,14 @@ namespace compax::dem
     double jamming_pressure = 0.5e6;
     /// What happens below the jamming pressure.
     RveConsolidation consolidation = RveConsolidation::none;
+    /// Bonded path: a converged unjammed relaxation is followed by the
+    /// trust-region Newton to the equilibrium options, whose solution is the
+    /// sub-step's converged state (a failed Newton cuts the sub-step back;
+    /// a relaxation that does not converge hands its state to Newton too),
+    /// as LoadSteppingOptions::newton_after_relaxation does in the die; the
+    /// relaxation's own test (net forces below the force resolution)
+    /// accepts force chains that a balanced loose cell does not carry.
+    bool newton_after_relaxation = false;
     /// FIRE iterations allowed per unjammed sub-step.
     int fire_iterations = 20000;
     /// Relative residual an unjammed sub-step relaxes to [-] ...

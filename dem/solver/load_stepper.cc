@@ -112,7 +112,10 @@ namespace compax::dem
       = u == UnjammedStep::relaxed && !stepping.newton_after_relaxation;
     if (total.relaxed)
       return total.last;
-    if (u == UnjammedStep::failed)
+    // A relaxation that did not converge cuts the sub-step back, unless
+    // Newton balances the relaxed states anyway: then it continues from
+    // where the relaxation got to.
+    if (u == UnjammedStep::failed && !stepping.newton_after_relaxation)
       return EquilibriumResult{}; // not converged: the sub-step is cut
     const EquilibriumResult r = newton.solve(bed, model);
     accumulate(total, r);

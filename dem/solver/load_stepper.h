@@ -41,7 +41,9 @@ namespace compax::dem
      * contacts (bridged ones pull too) give Newton its stiffness, and
      * Steihaug-CG stops at the trust-region boundary along the mechanisms
      * that have none, so loose states balance to the same tolerance as
-     * jammed ones. false: the relaxed state is the converged state.
+     * jammed ones. A relaxation that does not converge hands its state to
+     * Newton too (it only has to remove the large rearrangements). false:
+     * the relaxed state is the converged state.
      */
     bool newton_after_relaxation = false;
     /// FIRE iterations allowed per unjammed relaxation.

@@ -7,6 +7,27 @@
 
 using namespace compax::dem;
 
+namespace
+{
+  /// A deposit of @p n spheres in a 3 mm die, the beds of these tests.
+  Bed
+  deposit(const std::size_t n, const unsigned int seed)
+  {
+    DepositionParameters dp;
+    dp.n_particles  = n;
+    dp.die_diameter = 3e-3;
+    dp.seed         = seed;
+    return fill_die(dp);
+  }
+
+  /// Material 1 of Gonzalez 2018 (Table 1) with its bonds.
+  ContactModel
+  material1()
+  {
+    return ContactModel(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0}, 1.26e6);
+  }
+} // namespace
+
 /// A small deposited bed of Material 1 compacted, unloaded and ejected.
 /// Checks conservation laws at every converged state: with a frictionless
 /// die wall (radial forces only) the punch forces balance, |F_u - F_l|
@@ -16,13 +37,8 @@ using namespace compax::dem;
 /// tolerance); unloading ends with a free upper punch and a lower density.
 TEST(DieProtocol, PunchForcesBalanceAndBranchesAreConsistent)
 {
-  DepositionParameters dp;
-  dp.n_particles         = 150;
-  dp.die_diameter        = 3e-3;
-  dp.seed                = 3;
-  Bed                bed = fill_die(dp);
-  const ContactModel model(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
-                           1.26e6);
+  const Bed          bed   = deposit(150, 3);
+  const ContactModel model = material1();
   DieProtocol        protocol;
   protocol.compaction_targets
     = density_targets(bed.relative_density(), 0.8, 20);
@@ -54,7 +70,7 @@ TEST(DieProtocol, PunchForcesBalanceAndBranchesAreConsistent)
       if (!(r.stage == "compaction" && r.step == 0)) // the deposit
         {
           EXPECT_LE(std::abs(r.upper_punch_force - r.lower_punch_force),
-                    static_cast<double>(dp.n_particles) * r.residual
+                    static_cast<double>(bed.particles.size()) * r.residual
                         * r.mean_contact_force
                       + 1e-12 * std::abs(r.upper_punch_force))
             << r.stage << " step " << r.step;
@@ -92,13 +108,8 @@ TEST(DieProtocol, PunchForcesBalanceAndBranchesAreConsistent)
 /// leave them as they were.
 TEST(DieProtocol, ProgressLeavesTheCallersStreamFormat)
 {
-  DepositionParameters dp;
-  dp.n_particles         = 60;
-  dp.die_diameter        = 3e-3;
-  dp.seed                = 5;
-  Bed                bed = fill_die(dp);
-  const ContactModel model(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
-                           1.26e6);
+  const Bed          bed   = deposit(60, 5);
+  const ContactModel model = material1();
   DieProtocol        protocol;
   protocol.compaction_targets = density_targets(bed.relative_density(), 0.7, 3);
   protocol.eject              = false;
@@ -120,13 +131,8 @@ TEST(DieProtocol, ProgressLeavesTheCallersStreamFormat)
 /// recomputed independently at the end of its step, is within it too.
 TEST(DieProtocol, NewtonAfterRelaxationBalancesLooseStatesToTheSolverTolerance)
 {
-  DepositionParameters dp;
-  dp.n_particles         = 150;
-  dp.die_diameter        = 3e-3;
-  dp.seed                = 3;
-  Bed                bed = fill_die(dp);
-  const ContactModel model(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
-                           1.26e6);
+  const Bed          bed   = deposit(150, 3);
+  const ContactModel model = material1();
   DieProtocol        protocol;
   protocol.compaction_targets
     = density_targets(bed.relative_density(), 0.7, 15);

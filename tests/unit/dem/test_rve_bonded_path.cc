@@ -253,3 +253,35 @@ TEST(RveBondedPath, JammingIsSticky)
   EXPECT_TRUE(f.relaxed);
   EXPECT_GT(f.relaxation_iterations, 0);
 }
+
+/// With Newton after each unjammed relaxation, every converged loose state
+/// is a Newton solution (not a relaxed state) balanced to the equilibrium
+/// tolerance, checked by an independent residual: every net force within
+/// force_tolerance of the mean contact force or below the force floor.
+TEST(RveBondedPath, NewtonAfterRelaxationBalancesLooseStates)
+{
+  const ContactModel model(material1, 1.26e6);
+  PeriodicBed        bed       = deposited_cell();
+  RveLoadingOptions  opts      = options(RveConsolidation::none);
+  opts.newton_after_relaxation = true;
+  RveLoading   loading(model, opts);
+  const double tol   = opts.equilibrium.force_tolerance;
+  const double floor = opts.equilibrium.force_floor;
+  int          loose = 0;
+  for (int k = 0; k < 200 && !loading.jammed(bed); ++k)
+    {
+      const RveStepResult r = loading.apply_strain(bed, axial(step));
+      ASSERT_TRUE(r.converged) << "step " << k;
+      EXPECT_FALSE(r.relaxed) << "step " << k;
+      PeriodicAssembler assembler;
+      Eigen::VectorXd   F;
+      const ContactSums sums  = assembler.residual(bed, model, F);
+      const double      worst = max_particle_norm(F);
+      EXPECT_TRUE(worst <= 1.0001 * tol * sums.mean_force
+                  || worst <= 1.0001 * floor)
+        << "step " << k << ": " << worst << " N";
+      loose += !loading.jammed(bed);
+    }
+  EXPECT_GT(loose, 5); // the path had loose states to balance
+  EXPECT_TRUE(loading.jammed(bed));
+}
