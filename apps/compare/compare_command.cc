@@ -10,6 +10,8 @@
 #include "apps/rve/rve_parameters.h"
 #include "apps/tablet/tablet_command.h"
 
+#include "dem/solver/consolidation.h"
+
 #include <deal.II/base/exceptions.h>
 
 #include <algorithm>
@@ -35,6 +37,13 @@ namespace compax::cli
     /// at the same density (the RVE branches within a solver step of the
     /// requested density, the tablet ends within round-off of its target).
     constexpr double density_reach = 1e-3;
+    /// Die stresses below this are not resolved [Pa] (the particle die's
+    /// DieCompaction::pressure_resolution(), 5 kPa): the loose states of
+    /// its bonded path carry less, and a relative difference against them
+    /// says nothing.
+    const double pressure_resolution
+      = dem::ConsolidationOptions{}.force_floor_fraction
+        * dem::ConsolidationOptions{}.jamming_pressure;
 
     /// Entries of a sub-study's ParameterHandler ("Packing/Die diameter")
     /// and their values.
@@ -843,7 +852,8 @@ namespace compax::cli
           const auto  p      = die_csv.numbers("upper_punch_pressure");
           const auto  branch = die_csv.numbers("branch");
           for (std::size_t k = 0; k < die_csv.rows(); ++k)
-            if (stage[k] == "compaction" && branch[k] == 0.0)
+            if (stage[k] == "compaction" && branch[k] == 0.0
+                && p[k] >= pressure_resolution)
               {
                 die_p.x.push_back(rho[k]);
                 die_p.y.push_back(p[k]);
@@ -903,7 +913,8 @@ namespace compax::cli
             const std::vector<InteriorRow> interior
               = compare_interior(die_csv, CsvTable(rve_rows));
             write_interior_csv(folder / "interior.csv", interior);
-            for (auto &r : interior_comparison_rows(interior))
+            for (auto &r :
+                 interior_comparison_rows(interior, pressure_resolution))
               rows.push_back(r);
           }
 

@@ -46,17 +46,22 @@ namespace compax::cli
   }
 
   std::vector<ComparisonRow>
-  interior_comparison_rows(const std::vector<InteriorRow> &rows)
+  interior_comparison_rows(const std::vector<InteriorRow> &rows,
+                           const double                    resolution)
   {
     std::vector<ComparisonRow> out;
+    const auto                 resolved = [&](const InteriorRow &r) {
+      return std::abs(r.sigma_zz_interior) >= resolution
+             && r.sigma_zz_interior != 0.0;
+    };
     for (const InteriorRow &r : rows)
-      if (r.sigma_zz_interior != 0.0)
+      if (resolved(r))
         out.push_back({"interior_sigma_zz",
                        r.relative_density_interior,
                        r.sigma_zz_interior,
                        r.sigma_zz_rve});
     for (const InteriorRow &r : rows)
-      if (r.sigma_zz_interior != 0.0 && r.sigma_rr_interior != 0.0)
+      if (resolved(r) && r.sigma_rr_interior != 0.0)
         out.push_back({"interior_lateral_ratio",
                        r.relative_density_interior,
                        r.sigma_rr_interior / r.sigma_zz_interior,

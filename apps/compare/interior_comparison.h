@@ -39,9 +39,11 @@ namespace compax::cli
   /// compare.csv rows of the interior comparison: interior_sigma_zz
   /// (reference the die interior's sigma_zz, value the RVE's) and
   /// interior_lateral_ratio (sigma_rr / sigma_zz of the interior against
-  /// sigma_xx / sigma_zz of the RVE), both at the interior's density.
+  /// sigma_xx / sigma_zz of the RVE), both at the interior's density and
+  /// where the interior's |sigma_zz| reaches @p resolution [Pa].
   std::vector<ComparisonRow>
-  interior_comparison_rows(const std::vector<InteriorRow> &rows);
+  interior_comparison_rows(const std::vector<InteriorRow> &rows,
+                           double                          resolution);
 
   /// interior.csv: relative_density_die, relative_density_interior,
   /// sigma_zz_interior, sigma_rr_interior, sigma_zz_rve, sigma_xx_rve

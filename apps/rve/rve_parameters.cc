@@ -319,7 +319,8 @@ namespace compax::cli
   }
 
   void
-  declare_rve_solver_parameters(dealii::ParameterHandler &prm)
+  declare_rve_solver_parameters(dealii::ParameterHandler &prm,
+                                const std::string        &consolidation)
   {
     prm.enter_subsection("Solver");
     declare_equilibrium_tolerances(prm);
@@ -334,7 +335,7 @@ namespace compax::cli
                      "Newton.");
     prm.declare_entry(
       "Consolidation",
-      "none",
+      consolidation,
       dealii::Patterns::Selection("none|frozen-history"),
       "What happens below the Jamming pressure (as compax die's "
       "Protocol/Consolidation). none (the bonded path): a sub-step is "

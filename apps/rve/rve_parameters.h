@@ -130,9 +130,12 @@ namespace compax::cli
                          double                          deposit,
                          const std::string              &prefix = "");
 
-  /// Declares the subsection Solver of an RVE driven along a path.
+  /// Declares the subsection Solver of an RVE driven along a path, with
+  /// @p consolidation ("none" or "frozen-history") the default of its
+  /// Consolidation entry.
   void
-  declare_rve_solver_parameters(dealii::ParameterHandler &prm);
+  declare_rve_solver_parameters(dealii::ParameterHandler &prm,
+                                const std::string &consolidation = "none");
 
   /// Reads it.
   dem::RveLoadingOptions

@@ -276,11 +276,12 @@ namespace compax::dem
         d.bonding_surface     = m.bonding_surface;
         d.bonds               = m.n_bonds;
       }
+    const double           diameter = 2.0 * bed.particles.mean_radius();
     const InteriorMeasures interior
       = measure_interior(bed,
-                         protocol.interior_wall_distance * 2.0
-                           * bed.particles.mean_radius(),
-                         elastic ? 0.0 : force_resolution());
+                         protocol.interior_wall_distance * diameter,
+                         elastic ? 0.0 : force_resolution(),
+                         protocol.interior_min_extent * diameter);
     d.rho_interior       = interior.relative_density;
     d.sigma_zz_interior  = interior.sigma_zz;
     d.sigma_rr_interior  = interior.sigma_rr;

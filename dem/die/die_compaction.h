@@ -84,6 +84,9 @@ namespace compax::dem
     /// farther than this many mean particle diameters from the die wall and
     /// both punches [-].
     double interior_wall_distance = 2.0;
+    /// ... measured only while it is at least this many mean diameters
+    /// high and wide (measure_interior()'s min_extent) [-].
+    double interior_min_extent = 4.0;
     /// Also write a progress line per unloading and ejection step.
     bool verbose = false;
     /// Hand a checkpoint (DieCompaction::on_checkpoint) every this many

@@ -24,7 +24,8 @@ namespace compax::dem
   InteriorMeasures
   measure_interior(const Bed   &bed,
                    const double wall_distance,
-                   const double resolution)
+                   const double resolution,
+                   const double min_extent)
   {
     const ParticleSystem &p     = bed.particles;
     const DieWalls       &walls = bed.walls;
@@ -35,7 +36,8 @@ namespace compax::dem
     InteriorMeasures out;
     const double     nan = std::numeric_limits<double>::quiet_NaN();
     out.relative_density = out.sigma_zz = out.sigma_rr = nan;
-    if (!(r_max > 0.0 && z_hi > z_lo))
+    if (!(r_max > 0.0 && z_hi > z_lo) || z_hi - z_lo < min_extent
+        || 2.0 * r_max < min_extent)
       return out;
 
     std::vector<char> inside(p.size(), 0);

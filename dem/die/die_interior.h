@@ -40,9 +40,14 @@ namespace compax::dem
 
   /// The interior of @p bed: the particles farther than @p wall_distance
   /// [m] from the die wall and from both punches (see InteriorMeasures).
-  /// @p resolution [N] as in measure(): forces below it count as zero.
+  /// @p resolution [N] as in measure(): forces below it count as zero. A
+  /// region lower or narrower than @p min_extent [m] gives no numbers
+  /// (particles = 0): counting whole spheres by their centres, a region a
+  /// few layers thick reads the layering of the walls, not the compact
+  /// (solid fractions above 1 in a region thinner than a diameter).
   InteriorMeasures
   measure_interior(const Bed &bed,
                    double     wall_distance,
-                   double     resolution = 0.0);
+                   double     resolution = 0.0,
+                   double     min_extent = 0.0);
 } // namespace compax::dem

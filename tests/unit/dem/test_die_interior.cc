@@ -70,6 +70,10 @@ TEST(DieInterior, CubicLatticeGivesTheClosedForm)
   const InteriorMeasures empty = measure_interior(bed, 6.5 * a);
   EXPECT_EQ(empty.particles, 0u);
   EXPECT_TRUE(std::isnan(empty.sigma_zz));
+  // Nor does one lower than the extent asked for.
+  const double height = bed.walls.upper_punch - 2 * w;
+  EXPECT_EQ(measure_interior(bed, w, 0.0, 1.01 * height).particles, 0u);
+  EXPECT_EQ(measure_interior(bed, w, 0.0, 0.99 * height).particles, n);
 }
 
 /// With no wall distance the region is the whole die, and the moments of
