@@ -40,8 +40,8 @@ namespace compax::dem
    * that no two spheres overlap across the new periodic face. The column's
    * side is chosen for a cubic cell; the deposit is grown until its core
    * holds the spheres. The spheres are virgin (no history) and touch; the
-   * density is the deposit's core density (about 0.55-0.6 for equal
-   * spheres). Reproducible: the same spec gives the same cell.
+   * density is the deposit's core density (0.48-0.53 measured for 80 to
+   * 1000 equal spheres). Reproducible: the same spec gives the same cell.
    */
   PeriodicBed
   make_deposited_packing(const DepositedPackingSpec &spec);
