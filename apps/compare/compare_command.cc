@@ -38,12 +38,9 @@ namespace compax::cli
     /// requested density, the tablet ends within round-off of its target).
     constexpr double density_reach = 1e-3;
     /// Die stresses below this are not resolved [Pa] (the particle die's
-    /// DieCompaction::pressure_resolution(), 5 kPa): the loose states of
-    /// its bonded path carry less, and a relative difference against them
-    /// says nothing.
+    /// default resolution).
     const double pressure_resolution
-      = dem::ConsolidationOptions{}.force_floor_fraction
-        * dem::ConsolidationOptions{}.jamming_pressure;
+      = dem::ConsolidationOptions{}.pressure_resolution();
 
     /// Entries of a sub-study's ParameterHandler ("Packing/Die diameter")
     /// and their values.

@@ -269,17 +269,24 @@ namespace compax::cli
       "density are skipped.");
     prm.declare_entry(
       "Unjammed equilibrium",
-      "relaxation",
-      dealii::Patterns::Selection("relaxation|relaxation+newton"),
+      "balanced-relaxation",
+      dealii::Patterns::Selection(
+        "relaxation|relaxation+newton|balanced-relaxation"),
       "Bonded path (Consolidation = none) only: the converged state of a "
       "step while the punches carry less than 0.5 MPa. relaxation: the FIRE "
       "relaxation at fixed internal variables, balanced to 1e-2 of the mean "
-      "contact force or below the force resolution. relaxation+newton: the "
+      "contact force or below the force resolution (fast, but it accepts "
+      "force chains a balanced loose bed does not carry, and Eq. 13 grows "
+      "their plastic radii and bridges). relaxation+newton: the "
       "relaxation is followed by the trust-region Newton to the Solver "
       "tolerances (from where the relaxation got to, converged or not; a "
-      "step whose Newton fails is cut back), so loose states "
-      "balance as tightly as jammed ones; slower where Newton has little "
-      "stiffness to work with.");
+      "step whose Newton fails is cut back); it crawls near the jamming "
+      "onset. balanced-relaxation: the relaxation itself runs to the Solver "
+      "tolerances (relative force tolerance, or every net force below "
+      "1e-6 of a particle's share of 0.5 MPa) within 2e5 FIRE iterations, "
+      "else the step is cut back: loose states balance as tightly as "
+      "jammed ones, and it passes the jamming onset of the 6512-sphere "
+      "beds where Newton's overlap-scale steps crawl.");
     prm.declare_entry("Maximum ejection steps",
                       "40",
                       dealii::Patterns::Integer(1, 100000),
@@ -458,8 +465,8 @@ namespace compax::cli
     protocol.ejection_step      = prm.get_double("Ejection step");
     protocol.max_ejection_steps = prm.get_integer("Maximum ejection steps");
     protocol.consolidate        = prm.get("Consolidation") == "frozen-history";
-    protocol.newton_after_relaxation
-      = prm.get("Unjammed equilibrium") == "relaxation+newton";
+    protocol.unjammed_equilibrium
+      = dem::parse_unjammed_equilibrium(prm.get("Unjammed equilibrium"));
     protocol.checkpoint_interval = prm.get_integer("Checkpoint interval");
     protocol.stop_after      = prm.get_integer("Stop after compaction steps");
     const std::string resume = prm.get("Resume from");

@@ -351,15 +351,19 @@ namespace compax::cli
       "applies to Newton steps only.");
     prm.declare_entry(
       "Unjammed equilibrium",
-      "relaxation",
-      dealii::Patterns::Selection("relaxation|relaxation+newton"),
+      "balanced-relaxation",
+      dealii::Patterns::Selection(
+        "relaxation|relaxation+newton|balanced-relaxation"),
       "Consolidation = none only (as compax die's Protocol/Unjammed "
       "equilibrium): the converged state of a step below the Jamming "
       "pressure. relaxation: the FIRE relaxation. relaxation+newton: the "
       "relaxation followed by the trust-region Newton to the Solver "
       "tolerances (from where the relaxation got to, converged or not; a "
-      "step whose Newton fails is cut back), so loose states "
-      "balance as tightly as jammed ones.");
+      "step whose Newton fails is cut back). balanced-relaxation: the "
+      "relaxation itself run to the Solver tolerances (or every net force "
+      "below 1e-6 of a particle's share of the Jamming pressure) within "
+      "2e5 FIRE iterations, else the step is cut back. The last two balance "
+      "loose states as tightly as jammed ones.");
     prm.leave_subsection();
   }
 
@@ -660,8 +664,8 @@ namespace compax::cli
     o.consolidation    = prm.get("Consolidation") == "frozen-history"
                            ? dem::RveConsolidation::frozen_history
                            : dem::RveConsolidation::none;
-    o.newton_after_relaxation
-      = prm.get("Unjammed equilibrium") == "relaxation+newton";
+    o.unjammed_equilibrium
+      = dem::parse_unjammed_equilibrium(prm.get("Unjammed equilibrium"));
     prm.leave_subsection();
     return o;
   }

@@ -608,16 +608,16 @@ namespace compax::cli
           snapshot(step);
       const bool stop = study.stop_after > 0 && step >= study.stop_after;
       if (every(study.checkpoint_interval, step) || stop)
-        {
-          write_rve_checkpoint(checkpoint, study, bed, progress);
-          // Start afresh from the checkpointed state, as a resumed run does.
-          bed.contacts.rebuild(bed.particles, bed.cell, model);
-          loading = std::make_unique<dem::RveLoading>(model, study.loading);
-          keep_jammed();
-          tangent = std::make_unique<dem::TangentCalculator>();
-          if (study.elastic)
-            elastic = std::make_unique<dem::NonlocalRveLoading>(*study.elastic);
-        }
+        write_rve_checkpoint(checkpoint, study, bed, progress);
+      // Every step starts afresh from the state a checkpoint would hold, as
+      // a resumed run does: the results depend neither on the checkpoint
+      // interval nor on where a run was stopped and resumed.
+      bed.contacts.rebuild(bed.particles, bed.cell, model);
+      loading = std::make_unique<dem::RveLoading>(model, study.loading);
+      keep_jammed();
+      tangent = std::make_unique<dem::TangentCalculator>();
+      if (study.elastic)
+        elastic = std::make_unique<dem::NonlocalRveLoading>(*study.elastic);
       return stop;
     };
 

@@ -179,8 +179,7 @@ namespace compax::dem
   double
   DieCompaction::pressure_resolution() const
   {
-    const ConsolidationOptions &c = protocol.consolidation;
-    return c.force_floor_fraction * c.jamming_pressure;
+    return protocol.consolidation.pressure_resolution();
   }
 
   void
@@ -194,12 +193,12 @@ namespace compax::dem
     LoadSteppingOptions stepping;
     if (!protocol.consolidate)
       {
-        const ConsolidationOptions &c    = protocol.consolidation;
-        stepping.jamming_pressure        = c.jamming_pressure;
-        stepping.unjammed_tolerance      = c.relative_tolerance;
-        stepping.unjammed_iterations     = c.max_relaxation_iterations;
-        stepping.force_resolution        = force_resolution();
-        stepping.newton_after_relaxation = protocol.newton_after_relaxation;
+        const ConsolidationOptions &c = protocol.consolidation;
+        stepping.jamming_pressure     = c.jamming_pressure;
+        stepping.unjammed_tolerance   = c.relative_tolerance;
+        stepping.unjammed_iterations  = c.max_relaxation_iterations;
+        stepping.force_resolution     = force_resolution();
+        stepping.unjammed_equilibrium = protocol.unjammed_equilibrium;
       }
     stepper = std::make_unique<LoadStepper>(model, equilibrium, stepping);
   }
@@ -534,8 +533,10 @@ namespace compax::dem
     check(r, what.str());
     DieRecord d      = record(path, "compaction", 0, step, r);
     d.rho_max_in_die = d.relative_density;
-    // The bonded path jams where Newton takes over from the relaxation.
-    if (rho_jammed == 0.0 && !protocol.consolidate && !elastic && !r.relaxed)
+    // The bonded path jams where the punches first carry the jamming
+    // pressure (from there on Newton solves every step).
+    if (rho_jammed == 0.0 && !protocol.consolidate && !elastic
+        && !stepper->unjammed(path))
       rho_jammed = d.relative_density;
     emit(d, path);
     if (progress)

@@ -64,13 +64,10 @@ namespace compax::dem
      */
     bool                 consolidate = false;
     ConsolidationOptions consolidation;
-    /// Bonded path: an unjammed step's converged relaxation is followed by
-    /// the trust-region Newton to the solver tolerances
-    /// (LoadSteppingOptions::newton_after_relaxation), so that loose states
-    /// balance as tightly as jammed ones; false: the relaxed state is the
-    /// step's converged state (balanced to consolidation.relative_tolerance
-    /// or the force resolution).
-    bool newton_after_relaxation = false;
+    /// Bonded path: the converged state of an unjammed step
+    /// (LoadSteppingOptions::unjammed_equilibrium).
+    UnjammedEquilibrium unjammed_equilibrium
+      = UnjammedEquilibrium::balanced_relaxation;
     /// Elastic frictionless spheres instead of the ContactModel's bonded
     /// elasto-plastic law: Hertz, or the nonlocal contact formulation of
     /// Gonzalez & Cuitino 2012 (elastic->nonlocal), stepped by an
@@ -321,8 +318,8 @@ namespace compax::dem
 
     /// In-die relative density at which the bed jammed [-]: where the
     /// frozen-history consolidation ended, or on the bonded path the first
-    /// compaction state solved by Newton (its punches carried the jamming
-    /// pressure); 0 if not reached.
+    /// compaction state whose punches carried the jamming pressure (from
+    /// there on Newton solves every step); 0 if not reached.
     double
     jamming_density() const
     {

@@ -41,6 +41,14 @@ namespace compax::dem
     return opts.force_floor_fraction * opts.jamming_pressure * pi * R * R;
   }
 
+  double
+  RveLoading::balanced_force_floor(const PeriodicBed &bed) const
+  {
+    return std::max(opts.equilibrium.force_floor,
+                    opts.equilibrium.force_tolerance * force_resolution(bed)
+                      / opts.force_floor_fraction);
+  }
+
   bool
   RveLoading::jammed(const PeriodicBed &bed)
   {
@@ -68,10 +76,21 @@ namespace compax::dem
     const double resolution = force_resolution(bed);
     if (unjammed)
       {
-        const FireResult f = fire.relax(system,
-                                        opts.fire_tolerance,
-                                        opts.fire_iterations,
-                                        resolution);
+        // A balanced relaxation stops where Newton would: at the relative
+        // force tolerance, or below the floor at which a loose cell counts
+        // as force-free.
+        const bool balanced = !frozen
+                              && opts.unjammed_equilibrium
+                                   == UnjammedEquilibrium::balanced_relaxation;
+        const FireResult f = balanced
+                               ? fire.relax(system,
+                                            opts.equilibrium.force_tolerance,
+                                            opts.balanced_iterations,
+                                            balanced_force_floor(bed))
+                               : fire.relax(system,
+                                            opts.fire_tolerance,
+                                            opts.fire_iterations,
+                                            resolution);
         total.relaxation_iterations += f.iterations;
         total.relative_residual = f.relative_residual;
         if (frozen)
@@ -83,8 +102,10 @@ namespace compax::dem
               total.relaxed = true;
             return f.converged;
           }
+        const bool then_newton = opts.unjammed_equilibrium
+                                 == UnjammedEquilibrium::relaxation_then_newton;
         const double p = mean_pressure(bed);
-        if (p < opts.jamming_pressure && !opts.newton_after_relaxation)
+        if (p < opts.jamming_pressure && !then_newton)
           {
             // Still unjammed: the relaxed cell is the sub-step's
             // equilibrium, unless it did not get there (cut back: a
@@ -98,12 +119,6 @@ namespace compax::dem
             commit(bed, p, resolution, total);
             total.relaxed = true;
             return true;
-          }
-        if (!f.converged && p < opts.jamming_pressure
-            && !opts.newton_after_relaxation)
-          {
-            bed = saved;
-            return false;
           }
         // The cell jams in this sub-step, or Newton balances the relaxed
         // state: Newton finishes from it.

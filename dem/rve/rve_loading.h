@@ -5,6 +5,7 @@
 #include "dem/solver/fire_relaxation.h"
 #include "dem/solver/load_stepper.h"
 #include "dem/solver/trust_region_newton.h"
+#include "dem/solver/unjammed_equilibrium.h"
 
 #include <Eigen/Core>
 
@@ -43,14 +44,20 @@ namespace compax::dem
     double jamming_pressure = 0.5e6;
     /// What happens below the jamming pressure.
     RveConsolidation consolidation = RveConsolidation::none;
-    /// Bonded path: a converged unjammed relaxation is followed by the
-    /// trust-region Newton to the equilibrium options, whose solution is the
-    /// sub-step's converged state (a failed Newton cuts the sub-step back;
-    /// a relaxation that does not converge hands its state to Newton too),
-    /// as LoadSteppingOptions::newton_after_relaxation does in the die; the
-    /// relaxation's own test (net forces below the force resolution)
-    /// accepts force chains that a balanced loose cell does not carry.
-    bool newton_after_relaxation = false;
+    /// Bonded path: the converged state of an unjammed sub-step, as
+    /// LoadSteppingOptions::unjammed_equilibrium in the die: the relaxed
+    /// cell (relaxation; its test, net forces below the force resolution,
+    /// accepts force chains that a balanced loose cell does not carry),
+    /// the trust-region Newton from it (relaxation_then_newton; a failed
+    /// Newton cuts the sub-step back, a relaxation that does not converge
+    /// hands its state to Newton too), or the relaxation run to the
+    /// equilibrium options' force tolerance, or below force_tolerance times
+    /// a particle's share of the jamming pressure, within
+    /// balanced_iterations (balanced_relaxation).
+    UnjammedEquilibrium unjammed_equilibrium
+      = UnjammedEquilibrium::balanced_relaxation;
+    /// FIRE iterations allowed per balanced relaxation.
+    int balanced_iterations = 200000;
     /// FIRE iterations allowed per unjammed sub-step.
     int fire_iterations = 20000;
     /// Relative residual an unjammed sub-step relaxes to [-] ...
@@ -146,6 +153,13 @@ namespace compax::dem
     /// cell: force_floor_fraction p_jam pi R_mean^2 [N].
     double
     force_resolution(const PeriodicBed &bed) const;
+
+    /// Net force below which a balanced relaxation (or Newton) counts a
+    /// cell as balanced [N]: the equilibrium options' force floor, at least
+    /// force_tolerance times a particle's share pi R^2 of the jamming
+    /// pressure (so that a loose cell whose contacts open is balanced).
+    double
+    balanced_force_floor(const PeriodicBed &bed) const;
 
   private:
     /// One sub-step to F; true if converged (state advanced).

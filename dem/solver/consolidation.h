@@ -36,6 +36,15 @@ namespace compax::dem
     double force_floor_fraction = 1e-2;
     /// Relaxation iterations per increment before it counts as failed.
     int max_relaxation_iterations = 50000;
+
+    /// Punch pressure a study resolves [Pa]: force_floor_fraction times the
+    /// jamming pressure (5 kPa by default). Loose states carry less, so a
+    /// relative difference against them says nothing.
+    double
+    pressure_resolution() const
+    {
+      return force_floor_fraction * jamming_pressure;
+    }
   };
 
   /// Outcome of a relaxation at fixed walls.

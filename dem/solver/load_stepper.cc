@@ -82,12 +82,22 @@ namespace compax::dem
   {
     if (!(stepping.jamming_pressure > 0.0) || loose != 1)
       return UnjammedStep::newton;
-    const auto       t0 = std::chrono::steady_clock::now();
-    const FireResult f  = fire.relax(bed,
-                                    model,
-                                    stepping.unjammed_tolerance,
-                                    stepping.unjammed_iterations,
-                                    stepping.force_resolution);
+    // A balanced relaxation stops where Newton would: at the relative force
+    // tolerance or below the absolute force floor.
+    const bool balanced = stepping.unjammed_equilibrium
+                          == UnjammedEquilibrium::balanced_relaxation;
+    const EquilibriumOptions &eq = newton.options();
+    const auto                t0 = std::chrono::steady_clock::now();
+    const FireResult          f  = balanced ? fire.relax(bed,
+                                               model,
+                                               eq.force_tolerance,
+                                               stepping.balanced_iterations,
+                                               eq.force_floor)
+                                            : fire.relax(bed,
+                                               model,
+                                               stepping.unjammed_tolerance,
+                                               stepping.unjammed_iterations,
+                                               stepping.force_resolution);
     total.fire_seconds
       += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
            .count();
@@ -107,15 +117,16 @@ namespace compax::dem
   EquilibriumResult
   LoadStepper::solve_substep(Bed &bed, LoadStepResult &total)
   {
-    const UnjammedStep u = relax_unjammed(bed, total);
-    total.relaxed
-      = u == UnjammedStep::relaxed && !stepping.newton_after_relaxation;
+    const UnjammedStep u           = relax_unjammed(bed, total);
+    const bool         then_newton = stepping.unjammed_equilibrium
+                             == UnjammedEquilibrium::relaxation_then_newton;
+    total.relaxed = u == UnjammedStep::relaxed && !then_newton;
     if (total.relaxed)
       return total.last;
     // A relaxation that did not converge cuts the sub-step back, unless
     // Newton balances the relaxed states anyway: then it continues from
     // where the relaxation got to.
-    if (u == UnjammedStep::failed && !stepping.newton_after_relaxation)
+    if (u == UnjammedStep::failed && !then_newton)
       return EquilibriumResult{}; // not converged: the sub-step is cut
     const EquilibriumResult r = newton.solve(bed, model);
     accumulate(total, r);

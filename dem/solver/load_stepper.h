@@ -2,6 +2,7 @@
 
 #include "dem/solver/bed.h"
 #include "dem/solver/trust_region_newton.h"
+#include "dem/solver/unjammed_equilibrium.h"
 
 namespace compax::dem
 {
@@ -33,21 +34,26 @@ namespace compax::dem
     /// Relative residual of an unjammed relaxation [-].
     double unjammed_tolerance = 1e-2;
     /**
-     * true: a converged unjammed relaxation is the start of a trust-region
-     * Newton solve to EquilibriumOptions' tolerances, and the Newton
-     * solution (not the relaxed state) is the sub-step's converged state;
-     * a Newton solve that fails cuts the sub-step back. The relaxation
-     * removes the large rearrangements Newton cannot follow, the loaded
-     * contacts (bridged ones pull too) give Newton its stiffness, and
-     * Steihaug-CG stops at the trust-region boundary along the mechanisms
-     * that have none, so loose states balance to the same tolerance as
-     * jammed ones. A relaxation that does not converge hands its state to
-     * Newton too (it only has to remove the large rearrangements). false:
-     * the relaxed state is the converged state.
+     * The converged state of an unjammed sub-step (see
+     * UnjammedEquilibrium):
+     * - relaxation: the relaxed state (unjammed_tolerance or the force
+     *   resolution);
+     * - relaxation_then_newton: a trust-region Newton solve to
+     *   EquilibriumOptions' tolerances continues from the relaxed state,
+     *   converged or not (a relaxation that did not converge only has to
+     *   remove the large rearrangements), and its solution is the
+     *   sub-step's state; a Newton solve that fails cuts the sub-step back;
+     * - balanced_relaxation: the relaxation runs to EquilibriumOptions'
+     *   force tolerance or force floor within balanced_iterations; one that
+     *   does not get there cuts the sub-step back.
      */
-    bool newton_after_relaxation = false;
+    UnjammedEquilibrium unjammed_equilibrium = UnjammedEquilibrium::relaxation;
     /// FIRE iterations allowed per unjammed relaxation.
     int unjammed_iterations = 50000;
+    /// FIRE iterations allowed per balanced_relaxation: near the jamming
+    /// onset the slowest mode of the bed softens, and a 6512-sphere die
+    /// step there took up to 1.3e5 iterations.
+    int balanced_iterations = 200000;
     /**
      * Force resolution of the study [N]: Eq. (13) grows no plastic radius
      * (and forms no bridge) at a contact whose force is below it (see
@@ -77,8 +83,9 @@ namespace compax::dem
     int               fire_iterations  = 0;
     double            fire_seconds     = 0.0;
     /// Whether the last converged sub-step was an unjammed relaxation
-    /// (balanced to LoadSteppingOptions::unjammed_tolerance or the force
-    /// resolution) rather than a Newton solve to EquilibriumOptions.
+    /// rather than a Newton solve (balanced to
+    /// LoadSteppingOptions::unjammed_tolerance or the force resolution, or
+    /// with balanced_relaxation to EquilibriumOptions' tolerances).
     bool relaxed = false;
   };
 

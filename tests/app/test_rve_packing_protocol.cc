@@ -17,7 +17,8 @@ namespace
   constexpr double print_tolerance = 3e-12;
 
   std::string
-  small_cell(const std::string &consolidation)
+  small_cell(const std::string &consolidation,
+             const std::string &unjammed = "relaxation")
   {
     return "subsection Packing\n"
            " set Number of particles = 100\n"
@@ -36,7 +37,8 @@ namespace
            "end\n"
            "subsection Solver\n"
            " set Consolidation = "
-           + consolidation + "\nend\n";
+           + consolidation + "\n set Unjammed equilibrium = " + unjammed
+           + "\nend\n";
   }
 } // namespace
 
@@ -61,13 +63,24 @@ TEST_F(RvePackingProtocol, DepositCompactedOnTheBondedPathOrFrozen)
       EXPECT_EQ(csv->column.at("eps_zz")[0], 0.0);
     }
   // Compacted from the deposit (about 0.50) to 0.56 below the jamming
-  // pressure: the bonded path grew plastic radii and bridges on the way,
-  // the frozen-history path left the cell virgin.
+  // pressure: the bonded path with relaxed loose states grew plastic radii
+  // and bridges on the way (from the chains the relaxation leaves), the
+  // frozen-history path left the cell virgin.
   EXPECT_LT(bonded.column.at("mean_pressure")[0], 0.5e6);
   EXPECT_GT(bonded.column.at("bonding_surface")[0], 0.0);
   EXPECT_GT(bonded.column.at("bonds")[0], 0.0);
   EXPECT_EQ(frozen.column.at("bonding_surface")[0], 0.0);
   EXPECT_EQ(frozen.column.at("bonds")[0], 0.0);
+  // Balanced loose states (the default): the cell at 0.56 carries no
+  // resolved force (5 kPa), so no contact has deformed or bonded.
+  write("balanced.prm", small_cell("none", "balanced-relaxation"));
+  const auto c = compax("rve balanced.prm -o balanced");
+  ASSERT_EQ(c.exit_code, 0) << c.err << c.out;
+  const Csv balanced(folder / "balanced" / "rve.csv");
+  EXPECT_NEAR(balanced.column.at("relative_density")[0], 0.56, print_tolerance);
+  EXPECT_LT(std::abs(balanced.column.at("mean_pressure")[0]), 5e3);
+  EXPECT_EQ(balanced.column.at("bonding_surface")[0], 0.0);
+  EXPECT_EQ(balanced.column.at("bonds")[0], 0.0);
   // Bonded path: jammed from the first state that carried the jamming
   // pressure on, for good.
   const auto &jammed = bonded.column.at("jammed");

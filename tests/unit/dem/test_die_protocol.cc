@@ -3,7 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
+#include <vector>
 
 using namespace compax::dem;
 
@@ -125,35 +127,71 @@ TEST(DieProtocol, ProgressLeavesTheCallersStreamFormat)
   EXPECT_EQ(progress.flags(), flags);
 }
 
+namespace
+{
+  /**
+   * Compacts a small bed of Material 1 along the bonded path with the given
+   * unjammed equilibrium and checks that every state, loose ones included,
+   * is balanced to the solver tolerance (each residual recomputed
+   * independently at the end of its step; the relative tolerance, or every
+   * net force below the floor of 1e-6 of a particle's share of 0.5 MPa),
+   * and that the bed jams at the first state whose punches carry 0.5 MPa.
+   * @return the records' relaxed flags of the loose states.
+   */
+  std::vector<int>
+  expect_loose_states_balanced(const UnjammedEquilibrium unjammed)
+  {
+    const Bed          bed   = deposit(150, 3);
+    const ContactModel model = material1();
+    DieProtocol        protocol;
+    protocol.compaction_targets
+      = density_targets(bed.relative_density(), 0.7, 15);
+    protocol.eject                = false;
+    protocol.unjammed_equilibrium = unjammed;
+    DieCompaction die(bed, model, protocol);
+    EXPECT_NO_THROW(die.run());
+    const double jamming = 0.5e6;
+    const double tol     = EquilibriumOptions{}.force_tolerance;
+    const double floor   = tol * jamming * 3.14159265358979323846
+                         * std::pow(bed.particles.mean_radius(), 2);
+    double           first_jammed = 0.0;
+    std::vector<int> relaxed;
+    for (const DieRecord &r : die.records())
+      {
+        if (r.step == 0)
+          continue; // the deposit, recorded as filled
+        EXPECT_TRUE(r.residual <= tol
+                    || r.residual * r.mean_contact_force <= floor)
+          << r.step << " residual " << r.residual;
+        const bool loose
+          = std::max(r.upper_punch_pressure, r.lower_punch_pressure) < jamming;
+        if (!loose && first_jammed == 0.0)
+          first_jammed = r.relative_density;
+        if (loose && first_jammed == 0.0)
+          relaxed.push_back(r.relaxed);
+      }
+    EXPECT_GT(relaxed.size(), 2u); // the path had loose states to balance
+    EXPECT_GT(first_jammed, 0.0);  // and jammed
+    EXPECT_EQ(die.jamming_density(), first_jammed);
+    return relaxed;
+  }
+} // namespace
+
 /// With Newton after each unjammed relaxation, the loose states of the
-/// bonded path are balanced to the solver tolerance like the jammed ones
-/// (no state is left at the relaxation tolerance), and each one's residual,
-/// recomputed independently at the end of its step, is within it too.
+/// bonded path are balanced to the solver tolerance by Newton (none is a
+/// relaxed state).
 TEST(DieProtocol, NewtonAfterRelaxationBalancesLooseStatesToTheSolverTolerance)
 {
-  const Bed          bed   = deposit(150, 3);
-  const ContactModel model = material1();
-  DieProtocol        protocol;
-  protocol.compaction_targets
-    = density_targets(bed.relative_density(), 0.7, 15);
-  protocol.eject                   = false;
-  protocol.newton_after_relaxation = true;
-  DieCompaction die(bed, model, protocol);
-  ASSERT_NO_THROW(die.run());
-  const double tol   = EquilibriumOptions{}.force_tolerance;
-  std::size_t  loose = 0;
-  for (const DieRecord &r : die.records())
-    {
-      if (r.step == 0)
-        continue; // the deposit, recorded as filled
-      EXPECT_EQ(r.relaxed, 0) << r.step;
-      // Converged to the tolerance, or every net force below the floor.
-      EXPECT_TRUE(r.residual <= tol
-                  || r.residual * r.mean_contact_force
-                       <= tol * 0.5e6 * 3.14159265358979323846
-                            * std::pow(bed.particles.mean_radius(), 2))
-        << r.step << " residual " << r.residual;
-      loose += r.upper_punch_pressure < 0.5e6;
-    }
-  EXPECT_GT(loose, 2u); // the path had loose states to balance
+  for (const int relaxed : expect_loose_states_balanced(
+         UnjammedEquilibrium::relaxation_then_newton))
+    EXPECT_EQ(relaxed, 0);
+}
+
+/// A balanced relaxation brings the loose states to the solver tolerance
+/// itself: they are relaxed states, balanced like Newton's.
+TEST(DieProtocol, BalancedRelaxationBalancesLooseStatesToTheSolverTolerance)
+{
+  for (const int relaxed :
+       expect_loose_states_balanced(UnjammedEquilibrium::balanced_relaxation))
+    EXPECT_EQ(relaxed, 1);
 }

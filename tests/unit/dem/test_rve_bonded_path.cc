@@ -145,9 +145,13 @@ TEST(RveBondedPath, FailedSubstepLeavesHistoriesUntouched)
         {
           loose_with_history = true;
           // An unjammed relaxation with 2 FIRE iterations fails.
-          RveLoadingOptions o     = options(RveConsolidation::none);
-          o.fire_iterations       = 2;
-          o.stepping.min_fraction = 0.25;
+          RveLoadingOptions o   = options(RveConsolidation::none);
+          o.fire_iterations     = 2;
+          o.balanced_iterations = 2;
+          // ... and so does Newton, should the cell jam on the way.
+          o.equilibrium.max_iterations  = 1;
+          o.equilibrium.fire_iterations = 0;
+          o.stepping.min_fraction       = 0.25;
           RveLoading  failing(model, o);
           PeriodicBed copy   = bed;
           const auto  before = histories(copy);
@@ -254,34 +258,58 @@ TEST(RveBondedPath, JammingIsSticky)
   EXPECT_GT(f.relaxation_iterations, 0);
 }
 
+namespace
+{
+  /// Compacts the deposited cell uniaxially until it jams with the given
+  /// unjammed equilibrium; every converged loose state must be balanced to
+  /// the equilibrium tolerance, checked by an independent residual: every
+  /// net force within force_tolerance of the mean contact force or below
+  /// the loading's balanced force floor. Returns the relaxed flags.
+  std::vector<bool>
+  expect_loose_states_balanced(const UnjammedEquilibrium unjammed)
+  {
+    const ContactModel model(material1, 1.26e6);
+    PeriodicBed        bed    = deposited_cell();
+    RveLoadingOptions  opts   = options(RveConsolidation::none);
+    opts.unjammed_equilibrium = unjammed;
+    RveLoading        loading(model, opts);
+    const double      tol   = opts.equilibrium.force_tolerance;
+    const double      floor = loading.balanced_force_floor(bed);
+    std::vector<bool> relaxed;
+    for (int k = 0; k < 200 && !loading.jammed(bed); ++k)
+      {
+        const RveStepResult r = loading.apply_strain(bed, axial(step));
+        EXPECT_TRUE(r.converged) << "step " << k;
+        if (!r.converged)
+          break;
+        PeriodicAssembler assembler;
+        Eigen::VectorXd   F;
+        const ContactSums sums  = assembler.residual(bed, model, F);
+        const double      worst = max_particle_norm(F);
+        EXPECT_TRUE(worst <= 1.0001 * tol * sums.mean_force
+                    || worst <= 1.0001 * floor)
+          << "step " << k << ": " << worst << " N";
+        if (!loading.jammed(bed))
+          relaxed.push_back(r.relaxed);
+      }
+    EXPECT_GT(relaxed.size(), 5u); // the path had loose states to balance
+    return relaxed;
+  }
+} // namespace
+
 /// With Newton after each unjammed relaxation, every converged loose state
-/// is a Newton solution (not a relaxed state) balanced to the equilibrium
-/// tolerance, checked by an independent residual: every net force within
-/// force_tolerance of the mean contact force or below the force floor.
+/// is a Newton solution (not a relaxed state).
 TEST(RveBondedPath, NewtonAfterRelaxationBalancesLooseStates)
 {
-  const ContactModel model(material1, 1.26e6);
-  PeriodicBed        bed       = deposited_cell();
-  RveLoadingOptions  opts      = options(RveConsolidation::none);
-  opts.newton_after_relaxation = true;
-  RveLoading   loading(model, opts);
-  const double tol   = opts.equilibrium.force_tolerance;
-  const double floor = opts.equilibrium.force_floor;
-  int          loose = 0;
-  for (int k = 0; k < 200 && !loading.jammed(bed); ++k)
-    {
-      const RveStepResult r = loading.apply_strain(bed, axial(step));
-      ASSERT_TRUE(r.converged) << "step " << k;
-      EXPECT_FALSE(r.relaxed) << "step " << k;
-      PeriodicAssembler assembler;
-      Eigen::VectorXd   F;
-      const ContactSums sums  = assembler.residual(bed, model, F);
-      const double      worst = max_particle_norm(F);
-      EXPECT_TRUE(worst <= 1.0001 * tol * sums.mean_force
-                  || worst <= 1.0001 * floor)
-        << "step " << k << ": " << worst << " N";
-      loose += !loading.jammed(bed);
-    }
-  EXPECT_GT(loose, 5); // the path had loose states to balance
-  EXPECT_TRUE(loading.jammed(bed));
+  for (const bool relaxed : expect_loose_states_balanced(
+         UnjammedEquilibrium::relaxation_then_newton))
+    EXPECT_FALSE(relaxed);
+}
+
+/// A balanced relaxation balances the loose states itself.
+TEST(RveBondedPath, BalancedRelaxationBalancesLooseStates)
+{
+  for (const bool relaxed :
+       expect_loose_states_balanced(UnjammedEquilibrium::balanced_relaxation))
+    EXPECT_TRUE(relaxed);
 }

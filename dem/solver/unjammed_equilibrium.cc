@@ -1,0 +1,34 @@
+#include "dem/solver/unjammed_equilibrium.h"
+
+#include <stdexcept>
+
+namespace compax::dem
+{
+  std::string
+  unjammed_equilibrium_name(const UnjammedEquilibrium e)
+  {
+    switch (e)
+      {
+        case UnjammedEquilibrium::relaxation:
+          return "relaxation";
+        case UnjammedEquilibrium::relaxation_then_newton:
+          return "relaxation+newton";
+        case UnjammedEquilibrium::balanced_relaxation:
+          return "balanced-relaxation";
+      }
+    return "relaxation";
+  }
+
+  UnjammedEquilibrium
+  parse_unjammed_equilibrium(const std::string &name)
+  {
+    for (const auto e : {UnjammedEquilibrium::relaxation,
+                         UnjammedEquilibrium::relaxation_then_newton,
+                         UnjammedEquilibrium::balanced_relaxation})
+      if (unjammed_equilibrium_name(e) == name)
+        return e;
+    throw std::invalid_argument(
+      "unjammed equilibrium '" + name
+      + "' is not one of relaxation, relaxation+newton, balanced-relaxation");
+  }
+} // namespace compax::dem

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <string>
+
+namespace compax::dem
+{
+  /**
+   * What counts as the converged state of a load step while the bed (or
+   * cell) is unjammed, on the bonded path. Below jamming the trust-region
+   * Newton has no stiffness along the bed's mechanisms, so every variant
+   * starts with a FIRE relaxation at fixed internal variables; they differ
+   * in when the relaxation may stop, which decides whether force chains
+   * that a balanced loose bed does not carry reach Eq. (13).
+   */
+  enum class UnjammedEquilibrium
+  {
+    /// The relaxation, converged at the relaxation tolerance (1e-2 of the
+    /// mean contact force) or once every net force is below the study's
+    /// force resolution. Fast; accepts chains whose own imbalance is
+    /// below the resolution.
+    relaxation,
+    /// The relaxation, continued by the trust-region Newton to the
+    /// equilibrium tolerances (relative force tolerance, or the absolute
+    /// force floor).
+    relaxation_then_newton,
+    /// The relaxation itself run to the equilibrium tolerances (relative
+    /// force tolerance, or the absolute force floor), with the larger
+    /// iteration budget of LoadSteppingOptions::balanced_iterations. Near
+    /// the jamming onset the bed sits on saddles whose negative curvature
+    /// lives on the scale of the overlaps, where Newton's quadratic model
+    /// fails for steps a rearrangement needs; FIRE's inertia does not.
+    balanced_relaxation
+  };
+
+  /// "relaxation", "relaxation+newton" or "balanced-relaxation".
+  std::string
+  unjammed_equilibrium_name(UnjammedEquilibrium e);
+
+  /// The inverse of unjammed_equilibrium_name(); throws
+  /// std::invalid_argument naming the value for any other text.
+  UnjammedEquilibrium
+  parse_unjammed_equilibrium(const std::string &name);
+} // namespace compax::dem
