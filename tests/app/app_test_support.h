@@ -169,6 +169,39 @@ namespace compax::testing
     const std::filesystem::path &folder = dir;
   };
 
+  /// One row of a command's table of refused parameter files: the name of
+  /// the test, the file, and a piece of the one-line error message.
+  struct BadInput
+  {
+    const char *name;
+    const char *prm;
+    const char *expected_in_message;
+  };
+
+  /// The test name of a BadInput row (INSTANTIATE_TEST_SUITE_P's namer).
+  inline std::string
+  bad_input_name(const ::testing::TestParamInfo<BadInput> &info)
+  {
+    return info.param.name;
+  }
+
+  /// A command's table of refused parameter files, one test per row.
+  class BadInputTest : public AppTest,
+                       public ::testing::WithParamInterface<BadInput>
+  {
+  protected:
+    /// `compax <command>` refuses the row's file with exit code 2, its
+    /// message in one stderr line, and no output.
+    void
+    expect_row_rejected(const std::string &command) const
+    {
+      const BadInput &bad = GetParam();
+      write("bad.prm", bad.prm);
+      expect_rejected(compax(command + " bad.prm -o out"),
+                      bad.expected_in_message);
+    }
+  };
+
   /// A die study of a few seconds: 60 particles in a 2 mm die, 7
   /// compaction targets with the unloading points 0.62 (target 5) and 0.7
   /// (target 7), checkpoints after targets 2, 4 and 6.
