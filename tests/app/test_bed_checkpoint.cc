@@ -5,6 +5,7 @@
 #include "apps/die/bed_checkpoint.h"
 #include "dem/die/die_setup.h"
 #include "dem/solver/load_stepper.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -39,7 +40,7 @@ namespace
 
 TEST(BedCheckpoint, RestartEqualsUninterruptedRun)
 {
-  const dem::ContactModel model({5e9, 0.25, 150e6, 2.0}, 1.26e6);
+  const dem::ContactModel model = compax::testing::material1::contact_model();
   dem::LoadStepper        stepper(model);
   dem::Bed                original = compacted_bed(stepper);
 

@@ -8,6 +8,7 @@
 #include "dem/rve/periodic_packing.h"
 #include "dem/rve/rve_loading.h"
 
+#include "tests/support/gonzalez_material1.h"
 #include "tests/support/temporary_folder.h"
 
 #include <gtest/gtest.h>
@@ -22,8 +23,8 @@ namespace fs = std::filesystem;
 
 namespace
 {
-  const dem::ElastoplasticMaterial material1{5e9, 0.25, 150e6, 2.0};
-  constexpr double                 R = 220e-6;
+  namespace material1 = compax::testing::material1;
+  using material1::R;
 
   class RveArchive : public compax::testing::TemporaryFolderTest
   {
@@ -70,9 +71,9 @@ namespace
 
 TEST_F(RveArchive, RoundTripKeepsEveryField)
 {
-  const dem::ContactModel model(material1, 1.26e6);
-  const dem::PeriodicBed  bed  = loaded_cell(model);
-  const std::string       file = (dir / "rve.h5").string();
+  const dem::ContactModel model = material1::contact_model();
+  const dem::PeriodicBed  bed   = loaded_cell(model);
+  const std::string       file  = (dir / "rve.h5").string();
   coupling::save_rve(file, bed);
   const dem::PeriodicBed back = coupling::load_rve(file, model);
 
@@ -115,7 +116,7 @@ TEST_F(RveArchive, RoundTripKeepsEveryField)
 
 TEST_F(RveArchive, OneMoreStepFromTheRestoredStateEqualsTheOriginal)
 {
-  const dem::ContactModel model(material1, 1.26e6);
+  const dem::ContactModel model    = material1::contact_model();
   dem::PeriodicBed        original = loaded_cell(model);
   const std::string       file     = (dir / "rve.h5").string();
   coupling::save_rve(file, original);
@@ -155,8 +156,8 @@ TEST_F(RveArchive, OneMoreStepFromTheRestoredStateEqualsTheOriginal)
 
 TEST_F(RveArchive, NotAnRveArchiveIsRejected)
 {
-  const dem::ContactModel model(material1, 1.26e6);
-  const std::string       file = (dir / "other.h5").string();
+  const dem::ContactModel model = material1::contact_model();
+  const std::string       file  = (dir / "other.h5").string();
   {
     coupling::Hdf5ArchiveWriter w(file, {"something-else", ""});
     w.commit();

@@ -5,6 +5,7 @@
 
 #include "dem/die/die_compaction.h"
 #include "dem/die/die_setup.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -18,7 +19,7 @@ namespace
   struct Study
   {
     Bed          bed;
-    ContactModel model{ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0}, 1.26e6};
+    ContactModel model = compax::testing::material1::contact_model();
     DieProtocol  protocol;
   };
 

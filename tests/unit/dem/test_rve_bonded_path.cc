@@ -5,6 +5,7 @@
 #include "dem/rve/homogenization.h"
 #include "dem/rve/periodic_assembler.h"
 #include "dem/rve/rve_loading.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -12,14 +13,11 @@
 #include <vector>
 
 using namespace compax::dem;
+namespace material1 = compax::testing::material1;
+using material1::R;
 
 namespace
 {
-  // Material 1 of Gonzalez 2018 (Table 1) with bonds, as the other RVE
-  // tests use it.
-  const ElastoplasticMaterial material1{5e9, 0.25, 150e6, 2.0};
-  constexpr double            R = 220e-6;
-
   PeriodicBed
   deposited_cell()
   {
@@ -83,7 +81,7 @@ namespace
 /// equilibrium to the relaxation's tolerance or the force resolution.
 TEST(RveBondedPath, UnjammedRelaxationsCommitHistoriesFrozenDoNot)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model  = material1::contact_model();
   PeriodicBed        bonded = deposited_cell();
   PeriodicBed        frozen = bonded;
   RveLoading         bonded_loading(model, options(RveConsolidation::none));
@@ -131,8 +129,8 @@ TEST(RveBondedPath, UnjammedRelaxationsCommitHistoriesFrozenDoNot)
 /// every particle and every a_p, a_B as they were.
 TEST(RveBondedPath, FailedSubstepLeavesHistoriesUntouched)
 {
-  const ContactModel model(material1, 1.26e6);
-  PeriodicBed        bed = deposited_cell();
+  const ContactModel model = material1::contact_model();
+  PeriodicBed        bed   = deposited_cell();
   RveLoading         loading(model, options(RveConsolidation::none));
   // Compact until some history exists, then on into jamming.
   bool loose_with_history = false, jammed = false;
@@ -198,8 +196,8 @@ TEST(RveBondedPath, FailedSubstepLeavesHistoriesUntouched)
 /// such a step by FIRE instead.
 TEST(RveBondedPath, JammingIsSticky)
 {
-  const ContactModel model(material1, 1.26e6);
-  PeriodicBed        bed = deposited_cell();
+  const ContactModel model = material1::contact_model();
+  PeriodicBed        bed   = deposited_cell();
   RveLoading         loading(model, options(RveConsolidation::none));
   const double       p_jam = loading.options().jamming_pressure;
   ASSERT_FALSE(loading.jammed(bed));
@@ -260,7 +258,7 @@ TEST(RveBondedPath, JammingIsSticky)
 /// force_tolerance of the mean contact force or below the force floor.
 TEST(RveBondedPath, NewtonAfterRelaxationBalancesLooseStates)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model     = material1::contact_model();
   PeriodicBed        bed       = deposited_cell();
   RveLoadingOptions  opts      = options(RveConsolidation::none);
   opts.newton_after_relaxation = true;

@@ -2,6 +2,7 @@
 #include "dem/rve/periodic_bed_system.h"
 #include "dem/rve/periodic_packing.h"
 #include "dem/rve/rve_loading.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -9,12 +10,11 @@
 #include <cmath>
 
 using namespace compax::dem;
+namespace material1 = compax::testing::material1;
+using material1::R;
 
 namespace
 {
-  const ElastoplasticMaterial material1{5e9, 0.25, 150e6, 2.0};
-  constexpr double            R = 220e-6;
-
   /// n^3 copies of a cubic motif of edge a (fractional positions).
   PeriodicBed
   cubic_lattice(const std::vector<Eigen::Vector3d> &motif,
@@ -102,7 +102,7 @@ namespace
 /// sigma = -P(gamma) / a^2 I, a = 2R - gamma (Love-Weber by hand).
 TEST(RveHomogenization, LoveWeberStressOfSimpleCubicLattice)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model = material1::contact_model();
   const double       gamma = 0.02 * R, a = 2 * R - gamma;
   const PeriodicBed bed = cubic_lattice({Eigen::Vector3d::Zero()}, a, 2, model);
   ASSERT_EQ(bed.contacts.pairs.size(), 8u * 6u / 2u + 0u);
@@ -121,7 +121,7 @@ TEST(RveHomogenization, LoveWeberStressOfSimpleCubicLattice)
 /// out: sigma = -(1/V) sum_c P l n n^T = -(N/V) 6 P l (4/12) I.
 TEST(RveHomogenization, LoveWeberStressOfFaceCentredCubicLattice)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model = material1::contact_model();
   const double       gamma = 0.03 * R, l = 2 * R - gamma;
   const double       a_c = std::sqrt(2.0) * l;
   const PeriodicBed  bed = cubic_lattice({Eigen::Vector3d(0, 0, 0),
@@ -144,7 +144,7 @@ TEST(RveHomogenization, LoveWeberStressOfFaceCentredCubicLattice)
 /// with pairs touching through several images.
 TEST(RveHomogenization, PeriodicStiffnessEqualsDifferenceOfResidual)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model = material1::contact_model();
   PeriodicBed        bed
     = cubic_lattice({Eigen::Vector3d::Zero(), Eigen::Vector3d(0.5, 0.5, 0.5)},
                     2 * R * 1.1,
@@ -186,7 +186,7 @@ TEST(RveHomogenization, PeriodicStiffnessEqualsDifferenceOfResidual)
 /// motion is an equilibrium, so the condensed tangent equals the affine one.
 TEST(RveHomogenization, CondensedEqualsAffineForSimpleCubicLattice)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model = material1::contact_model();
   PeriodicBed        bed
     = cubic_lattice({Eigen::Vector3d::Zero()}, 2 * R * 0.97, 2, model);
   TangentCalculator  tangent;
@@ -200,7 +200,7 @@ TEST(RveHomogenization, CondensedEqualsAffineForSimpleCubicLattice)
 /// trial state of a disordered cell.
 TEST(RveHomogenization, CondensedTangentEqualsFiniteDifference)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model = material1::contact_model();
   for (const double trial : {-0.002, 0.0005})
     {
       PeriodicBed        bed = trial_state(model, uniaxial(trial));
@@ -240,7 +240,7 @@ TEST(RveHomogenization, CondensedTangentEqualsFiniteDifference)
 /// changes nothing else.
 TEST(RveHomogenization, RigidRotationRotatesStressOnly)
 {
-  const ContactModel    model(material1, 1.26e6);
+  const ContactModel    model = material1::contact_model();
   PeriodicBed           bed   = trial_state(model, uniaxial(-0.002));
   const Eigen::Matrix3d sigma = love_weber_stress(bed);
 
