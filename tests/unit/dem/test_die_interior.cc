@@ -1,6 +1,7 @@
 #include "dem/die/die_compaction.h"
 #include "dem/die/die_interior.h"
 #include "dem/die/die_setup.h"
+#include "tests/support/deposited_die.h"
 #include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
@@ -81,11 +82,7 @@ TEST(DieInterior, CubicLatticeGivesTheClosedForm)
 /// solid fraction is the die's relative density.
 TEST(DieInterior, WholeDieStressIsThePunchPressure)
 {
-  DepositionParameters dp;
-  dp.n_particles           = 150;
-  dp.die_diameter          = 3e-3;
-  dp.seed                  = 3;
-  Bed                bed   = fill_die(dp);
+  Bed                bed   = compax::testing::deposited_die(150, 3e-3, 3);
   const ContactModel model = material1::contact_model();
   DieProtocol        protocol;
   protocol.compaction_targets

@@ -5,6 +5,7 @@
 
 #include "dem/die/die_compaction.h"
 #include "dem/die/die_setup.h"
+#include "tests/support/deposited_die.h"
 #include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
@@ -26,12 +27,8 @@ namespace
   Study
   small_study()
   {
-    DepositionParameters dp;
-    dp.n_particles  = 120;
-    dp.die_diameter = 3e-3;
-    dp.seed         = 5;
     Study s;
-    s.bed = fill_die(dp);
+    s.bed = compax::testing::deposited_die(120, 3e-3, 5);
     s.protocol.compaction_targets
       = density_targets(s.bed.relative_density(), 0.78, 12);
     s.protocol.unloading_points    = {0.7, 0.78};

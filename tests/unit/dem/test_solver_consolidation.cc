@@ -3,6 +3,7 @@
 #include "dem/solver/consolidation.h"
 #include "dem/solver/contact_assembler.h"
 #include "dem/solver/trust_region_newton.h"
+#include "tests/support/deposited_die.h"
 #include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
@@ -53,11 +54,7 @@ TEST(SolverConsolidation, InlineResponseEqualsLaw)
 /// variable changed (consolidation never updates histories).
 TEST(SolverConsolidation, LooseDepositJamsWithBalancedPunches)
 {
-  DepositionParameters dp;
-  dp.n_particles           = 300;
-  dp.die_diameter          = 3.5e-3;
-  dp.seed                  = 5;
-  Bed                bed   = fill_die(dp);
+  Bed                bed   = compax::testing::deposited_die(300, 3.5e-3, 5);
   const ContactModel model = material1::contact_model();
   const double       rho0  = bed.relative_density();
   EXPECT_LT(rho0, 0.55);
@@ -102,11 +99,9 @@ TEST(SolverConsolidation, LooseDepositJamsWithBalancedPunches)
 /// net force is within the solver tolerance and the punch forces balance.
 TEST(SolverConsolidation, ThousandParticlesReach085)
 {
-  DepositionParameters dp;
-  dp.n_particles           = 1000;
-  dp.die_diameter          = 10e-3 * std::cbrt(1000.0 / 6512.0);
-  dp.seed                  = 1;
-  Bed                bed   = fill_die(dp);
+  Bed                bed   = compax::testing::deposited_die(1000,
+                                           10e-3 * std::cbrt(1000.0 / 6512.0),
+                                           1);
   const ContactModel model = material1::contact_model();
   DieProtocol        protocol;
   protocol.compaction_targets
