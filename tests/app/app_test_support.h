@@ -217,6 +217,24 @@ namespace compax::testing
       " set Checkpoint interval = 2\n"
       "end\n";
 
+  /// The die study of the die command and resume tests: 150 particles in
+  /// a 3 mm die, 16 density steps to 0.8 plus the unloading point 0.72 (17
+  /// targets; 0.72 is the 13th); @p extra_protocol ends its Protocol
+  /// subsection.
+  inline std::string
+  die_study_150(const std::string &extra_protocol = "")
+  {
+    return "subsection Packing\n"
+           " set Number of particles = 150\n"
+           " set Die diameter = 3e-3\n"
+           "end\n"
+           "subsection Protocol\n"
+           " set Final relative density = 0.8\n"
+           " set Compaction steps = 16\n"
+           " set Unloading points = 0.72, 0.8\n"
+           + extra_protocol + "end\n";
+  }
+
   /// A CSV file as its header and its columns by name, as numbers (NaN for
   /// text) and as text.
   struct Csv

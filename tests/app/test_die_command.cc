@@ -17,15 +17,7 @@ using compax::testing::expect_balanced_punches;
 
 namespace
 {
-  const std::string small_bed = "subsection Packing\n"
-                                " set Number of particles = 150\n"
-                                " set Die diameter = 3e-3\n"
-                                "end\n"
-                                "subsection Protocol\n"
-                                " set Final relative density = 0.8\n"
-                                " set Compaction steps = 16\n"
-                                " set Unloading points = 0.72, 0.8\n"
-                                "end\n";
+  const std::string small_bed = compax::testing::die_study_150();
 }
 
 class DieCommand : public AppTest
