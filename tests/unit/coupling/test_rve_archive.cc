@@ -9,6 +9,7 @@
 #include "dem/rve/rve_loading.h"
 
 #include "tests/support/gonzalez_material1.h"
+#include "tests/support/narrow_polydisperse_cell.h"
 #include "tests/support/temporary_folder.h"
 
 #include <gtest/gtest.h>
@@ -36,17 +37,10 @@ namespace
   dem::PeriodicBed
   loaded_cell(const dem::ContactModel &model)
   {
-    dem::PeriodicPackingSpec spec;
-    spec.particle_count      = 80;
-    spec.sizes.median_radius = R;
-    spec.sizes.log_sigma     = 0.1;
-    spec.sizes.min_radius    = 0.8 * R;
-    spec.sizes.max_radius    = 1.25 * R;
-    spec.relative_density    = 0.58;
-    spec.seed                = 5;
-    dem::PeriodicBed bed     = dem::make_periodic_packing(spec, model);
-    dem::RveLoading  loading(model);
-    const double     rho0 = bed.relative_density();
+    dem::PeriodicBed bed = dem::make_periodic_packing(
+      compax::testing::narrow_polydisperse_cell(80, R, 1.25, 0.58, 5), model);
+    dem::RveLoading loading(model);
+    const double    rho0 = bed.relative_density();
     for (const double rho : {0.64, 0.68, 0.71, 0.74})
       {
         Eigen::Matrix3d F = Eigen::Matrix3d::Identity();

@@ -3,6 +3,7 @@
 #include "dem/rve/periodic_packing.h"
 #include "dem/rve/rve_loading.h"
 #include "tests/support/gonzalez_material1.h"
+#include "tests/support/narrow_polydisperse_cell.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -68,15 +69,8 @@ namespace
   PeriodicBed
   trial_state(const ContactModel &model, const Eigen::Matrix3d &trial_strain)
   {
-    PeriodicPackingSpec spec;
-    spec.particle_count      = 60;
-    spec.sizes.median_radius = R;
-    spec.sizes.log_sigma     = 0.1;
-    spec.sizes.min_radius    = 0.8 * R;
-    spec.sizes.max_radius    = 1.2 * R;
-    spec.relative_density    = 0.60;
-    spec.seed                = 7;
-    PeriodicBed     bed      = make_periodic_packing(spec, model);
+    PeriodicBed bed = make_periodic_packing(
+      compax::testing::narrow_polydisperse_cell(60, R, 1.2, 0.60, 7), model);
     RveLoading      loading(model);
     Eigen::Matrix3d compress = Eigen::Matrix3d::Zero();
     compress(2, 2)           = -0.01;
