@@ -54,47 +54,13 @@ namespace compax::dem
     return x;
   }
 
-  void
-  DepositionColumn::drop(const Eigen::Vector3d &start,
-                         const double           R,
-                         const unsigned int     material)
-  {
-    // Fall: the highest first contact below.
-    Eigen::Vector3d x = start;
-    x[2]              = R;
-    grid.for_each_near(x, true, [&](const std::uint32_t j) {
-      const Eigen::Vector3d d  = separation(x, particles.positions[j]);
-      const double          s  = R + particles.radii[j];
-      const double          h2 = d[0] * d[0] + d[1] * d[1];
-      if (h2 < s * s)
-        x[2]
-          = std::max(x[2], particles.positions[j][2] + std::sqrt(s * s - h2));
-    });
-
-    // Roll down by projected descent.
-    double h = 0.25 * R;
-    for (int it = 0; it < 100000 && h > 1e-6 * R; ++it)
-      {
-        Eigen::Vector3d q = x;
-        q[2] -= h;
-        if (project(q, R) && q[2] < x[2] - 1e-9 * h)
-          {
-            x = q;
-            h = std::min(0.25 * R, 1.2 * h);
-          }
-        else
-          h *= 0.5;
-      }
-    particles.add(x, R, material);
-    grid.insert(x, static_cast<std::uint32_t>(particles.size() - 1));
-  }
-
+  template <bool periodic>
   Eigen::Vector3d
-  DepositionColumn::separation(const Eigen::Vector3d &x,
-                               const Eigen::Vector3d &y) const
+  DepositionColumn::offset(const Eigen::Vector3d &x,
+                           const Eigen::Vector3d &y) const
   {
-    Eigen::Vector3d d = y - x;
-    if (container == DepositionContainer::periodic_square)
+    Eigen::Vector3d d = x - y;
+    if (periodic)
       for (int k = 0; k < 2; ++k)
         d[k] -= width * std::round(d[k] / width);
     return d;
@@ -134,10 +100,10 @@ namespace compax::dem
     return false;
   }
 
+  template <bool periodic>
   bool
   DepositionColumn::project(Eigen::Vector3d &q, const double R) const
   {
-    const bool periodic = container == DepositionContainer::periodic_square;
     for (int sweep = 0; sweep < 200; ++sweep)
       {
         bool moved = false;
@@ -148,8 +114,8 @@ namespace compax::dem
           }
         moved = confine(q, R) || moved;
         grid.for_each_near(q, false, [&](const std::uint32_t j) {
-          const Eigen::Vector3d d    = -separation(q, particles.positions[j]);
-          const double          s    = R + particles.radii[j];
+          const Eigen::Vector3d d = offset<periodic>(q, particles.positions[j]);
+          const double          s = R + particles.radii[j];
           const double          dist = d.norm();
           if (dist < s * (1.0 - 1e-13))
             {
@@ -168,5 +134,44 @@ namespace compax::dem
           return true;
       }
     return false;
+  }
+
+  void
+  DepositionColumn::drop(const Eigen::Vector3d &start,
+                         const double           R,
+                         const unsigned int     material)
+  {
+    const bool periodic = container == DepositionContainer::periodic_square;
+    // Fall: the highest first contact below.
+    Eigen::Vector3d x = start;
+    x[2]              = R;
+    grid.for_each_near(x, true, [&](const std::uint32_t j) {
+      const Eigen::Vector3d d  = periodic
+                                   ? offset<true>(x, particles.positions[j])
+                                   : offset<false>(x, particles.positions[j]);
+      const double          s  = R + particles.radii[j];
+      const double          h2 = d[0] * d[0] + d[1] * d[1];
+      if (h2 < s * s)
+        x[2]
+          = std::max(x[2], particles.positions[j][2] + std::sqrt(s * s - h2));
+    });
+
+    // Roll down by projected descent.
+    double h = 0.25 * R;
+    for (int it = 0; it < 100000 && h > 1e-6 * R; ++it)
+      {
+        Eigen::Vector3d q = x;
+        q[2] -= h;
+        const bool free = periodic ? project<true>(q, R) : project<false>(q, R);
+        if (free && q[2] < x[2] - 1e-9 * h)
+          {
+            x = q;
+            h = std::min(0.25 * R, 1.2 * h);
+          }
+        else
+          h *= 0.5;
+      }
+    particles.add(x, R, material);
+    grid.insert(x, static_cast<std::uint32_t>(particles.size() - 1));
   }
 } // namespace compax::dem

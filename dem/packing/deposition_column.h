@@ -52,9 +52,12 @@ namespace compax::dem
     ParticleSystem particles;
 
   private:
-    /// y - x reduced to its shortest image, in x and y only.
+    /// x - y, in a periodic column reduced to the shortest image in x and
+    /// y: the offset of a centre x from a centre y. (The container's kind
+    /// is a template argument of the loops over neighbours, decided once.)
+    template <bool periodic>
     Eigen::Vector3d
-    separation(const Eigen::Vector3d &x, const Eigen::Vector3d &y) const;
+    offset(const Eigen::Vector3d &x, const Eigen::Vector3d &y) const;
 
     /// Moves q inside the walls; whether it had to move (a periodic wrap
     /// is no move).
@@ -63,6 +66,7 @@ namespace compax::dem
 
     /// Projects a trial centre of a sphere of radius R out of every
     /// overlap; false if it does not get free in 200 sweeps.
+    template <bool periodic>
     bool
     project(Eigen::Vector3d &q, double R) const;
 

@@ -46,7 +46,9 @@ namespace compax::dem
     }
 
     /// Calls f(j) for every sphere in the 3x3 columns around x, in the z
-    /// bins next to x's (all heights if all_heights), row by row.
+    /// bins next to x's (all heights if all_heights), row by row. A
+    /// periodic grid of fewer than three columns a side visits each column
+    /// once.
     template <typename Function>
     void
     for_each_near(const Eigen::Vector3d &x,
@@ -54,30 +56,33 @@ namespace compax::dem
                   Function               f) const
     {
       const int  cx = xy_bin(x[0]), cy = xy_bin(x[1]), cz = z_bin(x[2]);
-      const bool every_column = periodic && n_xy < 3;
-      const int  reach        = every_column ? 0 : 1;
-      for (int dy = -reach; dy <= reach; ++dy)
-        for (int dx = -reach; dx <= reach; ++dx)
-          for (int k = 0; k < (every_column ? n_xy * n_xy : 1); ++k)
-            {
-              int ix = every_column ? k % n_xy : cx + dx;
-              int iy = every_column ? k / n_xy : cy + dy;
-              if (periodic)
-                {
-                  ix = (ix + n_xy) % n_xy;
-                  iy = (iy + n_xy) % n_xy;
-                }
-              else if (ix < 0 || iy < 0 || ix >= n_xy || iy >= n_xy)
-                continue;
-              const auto &col = columns[iy * n_xy + ix];
-              const int   lo  = all_heights ? 0 : std::max(0, cz - 1);
-              const int   hi  = all_heights
-                                  ? static_cast<int>(col.size()) - 1
-                                  : std::min<int>(cz + 1, col.size() - 1);
-              for (int z = lo; z <= hi; ++z)
-                for (const std::uint32_t j : col[z])
-                  f(j);
-            }
+      const auto visit = [&](const int ix, const int iy) {
+        const auto &col = columns[iy * n_xy + ix];
+        const int   lo  = all_heights ? 0 : std::max(0, cz - 1);
+        const int   hi  = all_heights ? static_cast<int>(col.size()) - 1
+                                      : std::min<int>(cz + 1, col.size() - 1);
+        for (int z = lo; z <= hi; ++z)
+          for (const std::uint32_t j : col[z])
+            f(j);
+      };
+      if (!periodic)
+        {
+          for (int iy = std::max(0, cy - 1); iy <= std::min(n_xy - 1, cy + 1);
+               ++iy)
+            for (int ix = std::max(0, cx - 1); ix <= std::min(n_xy - 1, cx + 1);
+                 ++ix)
+              visit(ix, iy);
+          return;
+        }
+      if (n_xy < 3)
+        {
+          for (int k = 0; k < n_xy * n_xy; ++k)
+            visit(k % n_xy, k / n_xy);
+          return;
+        }
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+          visit((cx + dx + n_xy) % n_xy, (cy + dy + n_xy) % n_xy);
     }
 
   private:
