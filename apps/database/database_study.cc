@@ -3,6 +3,7 @@
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
+#include "apps/common/voigt_columns.h"
 #include "coupling/hdf5_archive.h"
 #include "dem/rve/homogenization.h"
 #include "dem/rve/rve_loading.h"
@@ -137,25 +138,15 @@ namespace compax::cli
   write_database_rows(const std::filesystem::path &folder,
                       const coupling::RveDatabase &db)
   {
-    CsvWriter csv(folder / "database.csv",
-                  {"branch",
-                   "path",
-                   "relative_density",
-                   "shear_strain",
-                   "eps_xx",
-                   "eps_yy",
-                   "eps_zz",
-                   "eps_yz",
-                   "eps_xz",
-                   "eps_xy",
-                   "sigma_xx",
-                   "sigma_yy",
-                   "sigma_zz",
-                   "sigma_yz",
-                   "sigma_xz",
-                   "sigma_xy",
-                   "p",
-                   "q"});
+    std::vector<std::string> columns{"branch",
+                                     "path",
+                                     "relative_density",
+                                     "shear_strain"};
+    for (const char *tensor : {"eps", "sigma"})
+      for (std::string &column : voigt_columns(tensor))
+        columns.push_back(std::move(column));
+    columns.insert(columns.end(), {"p", "q"});
+    CsvWriter csv(folder / "database.csv", std::move(columns));
     for (const coupling::DatabaseRow &r : db.rows)
       {
         csv << r.branch << r.path << r.relative_density << r.shear_strain;

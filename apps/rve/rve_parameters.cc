@@ -5,6 +5,7 @@
 #include "apps/common/contact_parameters.h"
 #include "apps/common/equilibrium_parameters.h"
 #include "apps/common/material_parameters.h"
+#include "apps/common/voigt_columns.h"
 #include "dem/periodic/size_distribution_fit.h"
 #include "dem/rve/rve_packing.h"
 
@@ -68,8 +69,7 @@ namespace compax::cli
   const std::vector<std::string> &
   strain_csv_columns()
   {
-    static const std::vector<std::string> names{
-      "eps_xx", "eps_yy", "eps_zz", "eps_yz", "eps_xz", "eps_xy"};
+    static const std::vector<std::string> names = voigt_columns("eps");
     return names;
   }
 

@@ -5,6 +5,7 @@
 #include "apps/cli/parameters.h"
 #include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
+#include "apps/common/voigt_columns.h"
 #include "apps/rve/rve_measures.h"
 #include "apps/rve/rve_snapshot.h"
 #include "coupling/elastic_moduli.h"
@@ -168,63 +169,53 @@ namespace compax::cli
   const std::vector<std::string> &
   rve_columns()
   {
-    static const std::vector<std::string> names{"step",
-                                                "stage",
-                                                "relative_density",
-                                                "eps_xx",
-                                                "eps_yy",
-                                                "eps_zz",
-                                                "eps_yz",
-                                                "eps_xz",
-                                                "eps_xy",
-                                                "sigma_xx",
-                                                "sigma_yy",
-                                                "sigma_zz",
-                                                "sigma_yz",
-                                                "sigma_xz",
-                                                "sigma_xy",
-                                                "mean_pressure",
-                                                "coordination_number",
-                                                "coordination_without_rattlers",
-                                                "rattler_fraction",
-                                                "bonding_surface",
-                                                "bonds",
-                                                "bonds_formed",
-                                                "bonds_broken",
-                                                "jammed",
-                                                "substeps",
-                                                "cutbacks",
-                                                "iterations",
-                                                "residual"};
+    static const std::vector<std::string> names = [] {
+      std::vector<std::string> n{"step", "stage", "relative_density"};
+      for (const char *tensor : {"eps", "sigma"})
+        for (std::string &column : voigt_columns(tensor))
+          n.push_back(std::move(column));
+      n.insert(n.end(),
+               {"mean_pressure",
+                "coordination_number",
+                "coordination_without_rattlers",
+                "rattler_fraction",
+                "bonding_surface",
+                "bonds",
+                "bonds_formed",
+                "bonds_broken",
+                "jammed",
+                "substeps",
+                "cutbacks",
+                "iterations",
+                "residual"});
+      return n;
+    }();
     return names;
   }
 
   const std::vector<std::string> &
   moduli_columns()
   {
-    static const std::vector<std::string> names{"step",
-                                                "stage",
-                                                "relative_density",
-                                                "E",
-                                                "nu",
-                                                "bulk_modulus",
-                                                "shear_modulus",
-                                                "E_p",
-                                                "nu_p",
-                                                "E_z",
-                                                "nu_zp",
-                                                "G_zp",
-                                                "C11",
-                                                "C33",
-                                                "C12",
-                                                "C13",
-                                                "C44",
-                                                "C11_affine",
-                                                "C33_affine",
-                                                "C12_affine",
-                                                "C13_affine",
-                                                "C44_affine",
-                                                "tangent_fd_error"};
+    static const std::vector<std::string> names = [] {
+      std::vector<std::string> n{"step",
+                                 "stage",
+                                 "relative_density",
+                                 "E",
+                                 "nu",
+                                 "bulk_modulus",
+                                 "shear_modulus",
+                                 "E_p",
+                                 "nu_p",
+                                 "E_z",
+                                 "nu_zp",
+                                 "G_zp"};
+      // The transversely isotropic stiffness, tangent and affine.
+      for (const std::string variant : {"", "_affine"})
+        for (const char *component : {"C11", "C33", "C12", "C13", "C44"})
+          n.push_back(component + variant);
+      n.push_back("tangent_fd_error");
+      return n;
+    }();
     return names;
   }
 

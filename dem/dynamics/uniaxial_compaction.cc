@@ -195,18 +195,24 @@ namespace compax::dem
       return r;
     };
 
+    // One explicit step, counted and added to the interval's stress
+    // integral; returns the strain it reaches.
+    auto advance = [&] {
+      const double h = s.time_step();
+      s.step();
+      summary.particle_steps += n;
+      stress_integral += h * stress_now();
+      interval_time += h;
+      return strain_now();
+    };
+
     (void)s.time_step(); // forces of the initial state
     emit(1);
     double next_output     = protocol.output_strain_interval;
     s.top_plate().velocity = -speed;
     for (;;)
       {
-        const double h = s.time_step();
-        s.step();
-        summary.particle_steps += n;
-        stress_integral += h * stress_now();
-        interval_time += h;
-        const double e      = strain_now();
+        const double e      = advance();
         const double sigma  = stress_now();
         summary.peak_strain = std::max(summary.peak_strain, e);
         summary.peak_stress = std::max(summary.peak_stress, sigma);
@@ -235,12 +241,7 @@ namespace compax::dem
         double       next      = peak - protocol.output_strain_interval;
         for (;;)
           {
-            const double h = s.time_step();
-            s.step();
-            summary.particle_steps += n;
-            stress_integral += h * stress_now();
-            interval_time += h;
-            const double e    = strain_now();
+            const double e    = advance();
             const bool   done = stress_now() <= 0.0 || e <= 0.0;
             if (e <= next || done)
               {

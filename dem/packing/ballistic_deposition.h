@@ -1,5 +1,6 @@
 #pragma once
 
+#include "dem/packing/deposition_column.h"
 #include "dem/packing/random_source.h"
 #include "dem/particles/particle_system.h"
 
@@ -8,22 +9,11 @@
 
 namespace compax::dem
 {
-  /// The lateral boundary the spheres fall between.
-  enum class DepositionContainer
-  {
-    /// A rigid cylindrical die of diameter die_diameter, axis z through the
-    /// origin.
-    cylinder,
-    /// A square column [-L/2, L/2)^2 of side L = die_diameter, periodic in
-    /// x and y (no lateral wall: the lateral faces of a periodic cell).
-    periodic_square
-  };
-
   /// Parameters of a ballistic deposition into a die (floor at z = 0).
   struct DepositionParameters
   {
     std::size_t n_particles = 500;
-    /// Die diameter D, or side L of a periodic column [m].
+    /// Die diameter D, or side L of a periodic column or square die [m].
     double              die_diameter = 4e-3;
     DepositionContainer container    = DepositionContainer::cylinder;
     SizeDistribution    sizes;

@@ -169,6 +169,39 @@ namespace compax::testing
     const std::filesystem::path &folder = dir;
   };
 
+  /// One row of a command's table of refused parameter files: the name of
+  /// the test, the file, and a piece of the one-line error message.
+  struct BadInput
+  {
+    const char *name;
+    const char *prm;
+    const char *expected_in_message;
+  };
+
+  /// The test name of a BadInput row (INSTANTIATE_TEST_SUITE_P's namer).
+  inline std::string
+  bad_input_name(const ::testing::TestParamInfo<BadInput> &info)
+  {
+    return info.param.name;
+  }
+
+  /// A command's table of refused parameter files, one test per row.
+  class BadInputTest : public AppTest,
+                       public ::testing::WithParamInterface<BadInput>
+  {
+  protected:
+    /// `compax <command>` refuses the row's file with exit code 2, its
+    /// message in one stderr line, and no output.
+    void
+    expect_row_rejected(const std::string &command) const
+    {
+      const BadInput &bad = GetParam();
+      write("bad.prm", bad.prm);
+      expect_rejected(compax(command + " bad.prm -o out"),
+                      bad.expected_in_message);
+    }
+  };
+
   /// A die study of a few seconds: 60 particles in a 2 mm die, 7
   /// compaction targets with the unloading points 0.62 (target 5) and 0.7
   /// (target 7), checkpoints after targets 2, 4 and 6.
@@ -183,6 +216,24 @@ namespace compax::testing
       " set Unloading points = 0.62, 0.7\n"
       " set Checkpoint interval = 2\n"
       "end\n";
+
+  /// The die study of the die command and resume tests: 150 particles in
+  /// a 3 mm die, 16 density steps to 0.8 plus the unloading point 0.72 (17
+  /// targets; 0.72 is the 13th); @p extra_protocol ends its Protocol
+  /// subsection.
+  inline std::string
+  die_study_150(const std::string &extra_protocol = "")
+  {
+    return "subsection Packing\n"
+           " set Number of particles = 150\n"
+           " set Die diameter = 3e-3\n"
+           "end\n"
+           "subsection Protocol\n"
+           " set Final relative density = 0.8\n"
+           " set Compaction steps = 16\n"
+           " set Unloading points = 0.72, 0.8\n"
+           + extra_protocol + "end\n";
+  }
 
   /// A CSV file as its header and its columns by name, as numbers (NaN for
   /// text) and as text.

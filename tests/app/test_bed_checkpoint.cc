@@ -5,6 +5,8 @@
 #include "apps/die/bed_checkpoint.h"
 #include "dem/die/die_setup.h"
 #include "dem/solver/load_stepper.h"
+#include "tests/support/deposited_die.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -18,11 +20,7 @@ namespace
   dem::Bed
   compacted_bed(dem::LoadStepper &stepper)
   {
-    dem::DepositionParameters deposition;
-    deposition.n_particles  = 60;
-    deposition.die_diameter = 2.2e-3;
-    deposition.seed         = 7;
-    dem::Bed bed            = dem::fill_die(deposition);
+    dem::Bed bed = compax::testing::deposited_die(60, 2.2e-3, 7);
     // Press well into the jammed regime so that plastic radii and bridges
     // exist.
     for (const double rho : {0.62, 0.68, 0.72})
@@ -39,7 +37,7 @@ namespace
 
 TEST(BedCheckpoint, RestartEqualsUninterruptedRun)
 {
-  const dem::ContactModel model({5e9, 0.25, 150e6, 2.0}, 1.26e6);
+  const dem::ContactModel model = compax::testing::material1::contact_model();
   dem::LoadStepper        stepper(model);
   dem::Bed                original = compacted_bed(stepper);
 

@@ -121,6 +121,20 @@ protected:
       }
     std::filesystem::remove(folder / "flipped.h5");
   }
+
+  /// @p file of a finished tablet run (folder `tablet`) with a flipped byte
+  /// in its middle: resuming `tablet` from that run is refused with
+  /// @p expected; the file is restored afterwards.
+  void
+  expect_tablet_file_damage_refused(const std::string           &tablet,
+                                    const std::filesystem::path &file,
+                                    const std::string           &expected)
+  {
+    const std::string intact = bytes(file);
+    put(file, flipped(intact, 0.5));
+    expect_resume_refused("tablet", tablet, "Output", "tablet", {expected});
+    put(file, intact);
+  }
 };
 
 TEST_F(CheckpointSafety, DieRefusesForeignDamagedAndMismatchedCheckpoints)
@@ -273,27 +287,16 @@ TEST_F(CheckpointSafety, DatabaseAndTabletRefuseForeignAndDamagedCheckpoints)
       "  set Write fields = false\nend\n";
   write("tablet.prm", tablet);
   ASSERT_EQ(compax("tablet tablet.prm -o tablet").exit_code, 0);
-  const auto        archive = folder / "tablet" / "checkpoint" / "tablet.h5";
-  const std::string intact  = bytes(archive);
-  put(archive, flipped(intact, 0.5));
-  expect_resume_refused("tablet",
-                        tablet,
-                        "Output",
-                        "tablet",
-                        {"entry 'Output/Resume from' = tablet: "
-                         "checkpoint/tablet.h5 fails its checksum"});
-  put(archive, intact);
+  expect_tablet_file_damage_refused(
+    tablet,
+    folder / "tablet" / "checkpoint" / "tablet.h5",
+    "entry 'Output/Resume from' = tablet: checkpoint/tablet.h5 fails its "
+    "checksum");
   // The solver state it lists, damaged.
-  const auto        state  = folder / "tablet" / "checkpoint" / "solver.0.bin";
-  const std::string solver = bytes(state);
-  put(state, flipped(solver, 0.5));
-  expect_resume_refused("tablet",
-                        tablet,
-                        "Output",
-                        "tablet",
-                        {"its file 'solver.0.bin' differs from the one it was "
-                         "written with"});
-  put(state, solver);
+  expect_tablet_file_damage_refused(
+    tablet,
+    folder / "tablet" / "checkpoint" / "solver.0.bin",
+    "its file 'solver.0.bin' differs from the one it was written with");
   expect_resume_refused(
     "tablet",
     tablet + "subsection Die\n  set Wall friction coefficient = 0.3\nend\n",

@@ -4,16 +4,12 @@
 // naming entry, value and range, no output folder).
 
 #include "app_test_support.h"
+#include "dem/numbers.h"
 
 #include <cmath>
 
-using compax::testing::AppTest;
-using compax::testing::Csv;
-
-namespace
-{
-  const double pi = std::acos(-1.0);
-}
+using namespace compax::testing;
+using compax::dem::pi;
 
 class ContactCommand : public AppTest
 {
@@ -98,23 +94,11 @@ TEST_F(ContactCommand, HertzSphereSphereOfTwoMaterials)
   EXPECT_NEAR(csv.column.at("force").back(), P, 1e-9 * P);
 }
 
-struct BadInput
-{
-  const char *name;
-  const char *prm;
-  const char *expected_in_message;
-};
-
-class ContactBadInput : public AppTest,
-                        public ::testing::WithParamInterface<BadInput>
-{
-};
+using ContactBadInput = BadInputTest;
 
 TEST_P(ContactBadInput, IsRejectedWithExitCode2AndNoOutput)
 {
-  const BadInput &bad = GetParam();
-  write("bad.prm", bad.prm);
-  expect_rejected(compax("contact bad.prm -o out"), bad.expected_in_message);
+  expect_row_rejected("contact");
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -154,7 +138,7 @@ INSTANTIATE_TEST_SUITE_P(
              "set Geometry = sphere-sphere\nsubsection Particle 2\n"
              " set Plastic exponent = 3\nend\n",
              "Plastic exponent"}),
-  [](const auto &info) { return std::string(info.param.name); });
+  bad_input_name);
 
 TEST_F(ContactCommand, MissingFileIsRejected)
 {

@@ -4,16 +4,15 @@
 // (exit code 2, one line, no output folder).
 
 #include "app_test_support.h"
+#include "dem/numbers.h"
 
 #include <cmath>
 
-using compax::testing::AppTest;
-using compax::testing::Csv;
+using namespace compax::testing;
+using compax::dem::pi;
 
 namespace
 {
-  const double pi = std::acos(-1.0);
-
   /// Rows of a text CSV as cells.
   std::vector<std::vector<std::string>>
   rows(const std::filesystem::path &file)
@@ -147,46 +146,33 @@ TEST_F(CrystalCommand, PrintedParametersAreAValidParameterFile)
   EXPECT_EQ(compax("crystal --help").exit_code, 0);
 }
 
-struct CrystalBadInput
-{
-  const char *name;
-  const char *prm;
-  const char *expected_in_message;
-};
-
-class CrystalBadInputTest
-    : public AppTest,
-      public ::testing::WithParamInterface<CrystalBadInput>
-{
-};
+using CrystalBadInputTest = BadInputTest;
 
 TEST_P(CrystalBadInputTest, IsRejectedWithExitCode2AndNoOutput)
 {
-  const CrystalBadInput &bad = GetParam();
-  write("bad.prm", bad.prm);
-  expect_rejected(compax("crystal bad.prm -o out"), bad.expected_in_message);
+  expect_row_rejected("crystal");
 }
 
 INSTANTIATE_TEST_SUITE_P(
   Crystal,
   CrystalBadInputTest,
   ::testing::Values(
-    CrystalBadInput{"PoissonRatioHalf",
-                    "subsection Particle\n set Poisson's ratio = 0.5\nend\n",
-                    "Poisson's ratio"},
-    CrystalBadInput{"PoissonRatioBelowMinusOne",
-                    "subsection Particle\n set Poisson's ratio = -1.2\nend\n",
-                    "(-1, 0.5)"},
-    CrystalBadInput{"AdditionalPoissonRatio",
-                    "set Additional Poisson's ratios = 0.3, 0.7\n",
-                    "0.7"},
-    CrystalBadInput{"NegativeRadius",
-                    "subsection Particle\n set Radius = -0.01\nend\n",
-                    "Radius"},
-    CrystalBadInput{"UnknownConfiguration",
-                    "set Configurations = bcc-die, fcc-die\n",
-                    "fcc-die"},
-    CrystalBadInput{"DensityBelowStart",
-                    "set Maximum relative density = 0.5\n",
-                    "Maximum relative density"}),
-  [](const auto &info) { return std::string(info.param.name); });
+    BadInput{"PoissonRatioHalf",
+             "subsection Particle\n set Poisson's ratio = 0.5\nend\n",
+             "Poisson's ratio"},
+    BadInput{"PoissonRatioBelowMinusOne",
+             "subsection Particle\n set Poisson's ratio = -1.2\nend\n",
+             "(-1, 0.5)"},
+    BadInput{"AdditionalPoissonRatio",
+             "set Additional Poisson's ratios = 0.3, 0.7\n",
+             "0.7"},
+    BadInput{"NegativeRadius",
+             "subsection Particle\n set Radius = -0.01\nend\n",
+             "Radius"},
+    BadInput{"UnknownConfiguration",
+             "set Configurations = bcc-die, fcc-die\n",
+             "fcc-die"},
+    BadInput{"DensityBelowStart",
+             "set Maximum relative density = 0.5\n",
+             "Maximum relative density"}),
+  bad_input_name);

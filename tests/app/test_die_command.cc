@@ -7,6 +7,7 @@
 #include "app_test_support.h"
 
 #include "apps/die/bed_checkpoint.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <cmath>
 
@@ -16,15 +17,7 @@ using compax::testing::expect_balanced_punches;
 
 namespace
 {
-  const std::string small_bed = "subsection Packing\n"
-                                " set Number of particles = 150\n"
-                                " set Die diameter = 3e-3\n"
-                                "end\n"
-                                "subsection Protocol\n"
-                                " set Final relative density = 0.8\n"
-                                " set Compaction steps = 16\n"
-                                " set Unloading points = 0.72, 0.8\n"
-                                "end\n";
+  const std::string small_bed = compax::testing::die_study_150();
 }
 
 class DieCommand : public AppTest
@@ -141,7 +134,8 @@ TEST_F(DieCommand, NonConvergenceStopsCleanlyWithTheLastGoodState)
   ASSERT_GE(die.rows(), 1u);
   const compax::coupling::Hdf5ArchiveReader archive(
     (folder / "out" / "last_converged.h5").string());
-  const compax::dem::ContactModel model({5e9, 0.25, 150e6, 2.0}, 1.26e6);
+  const compax::dem::ContactModel model
+    = compax::testing::material1::contact_model();
   const auto bed = compax::cli::load_bed(archive, "bed", model);
   EXPECT_EQ(bed.particles.size(), 150u);
   EXPECT_NEAR(bed.relative_density(),

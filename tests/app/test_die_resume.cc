@@ -16,21 +16,12 @@ using compax::testing::Csv;
 
 namespace
 {
-  /// 150 particles, 16 density steps to 0.8 plus the unloading point 0.72
-  /// (17 targets; 0.72 is the 13th), a checkpoint every 7 targets.
+  /// die_study_150 with a checkpoint every 7 targets.
   std::string
   study(const std::string &extra_protocol)
   {
-    return "subsection Packing\n"
-           " set Number of particles = 150\n"
-           " set Die diameter = 3e-3\n"
-           "end\n"
-           "subsection Protocol\n"
-           " set Final relative density = 0.8\n"
-           " set Compaction steps = 16\n"
-           " set Unloading points = 0.72, 0.8\n"
-           " set Checkpoint interval = 7\n"
-           + extra_protocol + "end\n";
+    return compax::testing::die_study_150(" set Checkpoint interval = 7\n"
+                                          + extra_protocol);
   }
 
   /// Whether two tables hold the same numbers to `relative` (columns that
@@ -61,6 +52,15 @@ namespace
 
 class DieResume : public AppTest
 {
+protected:
+  /// full/<file> and resumed/<file> hold the same numbers to 1e-9.
+  void
+  expect_resumed_equals_full(const std::string &file) const
+  {
+    expect_same_numbers(Csv(folder / "full" / file),
+                        Csv(folder / "resumed" / file),
+                        1e-9);
+  }
 };
 
 TEST_F(DieResume, StoppedAndResumedRunEqualsTheUninterruptedRun)
@@ -88,18 +88,16 @@ TEST_F(DieResume, StoppedAndResumedRunEqualsTheUninterruptedRun)
   EXPECT_NE(resumed.out.find("resuming after 14 of 17"), std::string::npos)
     << resumed.out;
 
-  expect_same_numbers(full_rows, Csv(folder / "resumed" / "die.csv"), 1e-9);
+  expect_resumed_equals_full("die.csv");
   const Csv branches(folder / "resumed" / "branches.csv");
   EXPECT_EQ(branches.rows(), 2u);
-  expect_same_numbers(Csv(folder / "full" / "branches.csv"), branches, 1e-9);
+  expect_resumed_equals_full("branches.csv");
   // The first branch's files come over from the interrupted run.
   EXPECT_TRUE(std::filesystem::exists(folder / "resumed" / "checkpoints"
                                       / "branch-1.h5"));
   EXPECT_TRUE(std::filesystem::exists(folder / "resumed" / "snapshots"
                                       / "ejection-1.vtu"));
-  expect_same_numbers(Csv(folder / "full" / "fabric.csv"),
-                      Csv(folder / "resumed" / "fabric.csv"),
-                      1e-9);
+  expect_resumed_equals_full("fabric.csv");
 }
 
 TEST_F(DieResume, KilledRunResumesFromItsStagedCheckpoint)
@@ -133,12 +131,8 @@ TEST_F(DieResume, KilledRunResumesFromItsStagedCheckpoint)
   const auto resumed = compax("die resume.prm -o resumed");
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_NE(resumed.out.find("resuming after"), std::string::npos);
-  expect_same_numbers(Csv(folder / "full" / "die.csv"),
-                      Csv(folder / "resumed" / "die.csv"),
-                      1e-9);
-  expect_same_numbers(Csv(folder / "full" / "branches.csv"),
-                      Csv(folder / "resumed" / "branches.csv"),
-                      1e-9);
+  expect_resumed_equals_full("die.csv");
+  expect_resumed_equals_full("branches.csv");
 }
 
 TEST_F(DieResume, CheckpointOfAnotherStudyIsRejected)

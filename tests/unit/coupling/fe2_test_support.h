@@ -1,11 +1,13 @@
 #pragma once
 // Shared pieces of the FE2 tests: a periodic simple cubic lattice (a
 // Bravais lattice: its affine deformation is an equilibrium, so its
-// response is the pair law's, written out by hand in the tests), the
-// contact model, and a small drawn-packing material spec.
+// response is the pair law's, written out by hand in the tests) and a
+// small drawn-packing material spec of Material 1 (its contact model is
+// material1::contact_model()).
 #include "coupling/rve_material.h"
 #include "dem/rve/periodic_bed.h"
 #include "dem/solver/contact_model.h"
+#include "tests/support/gonzalez_material1.h"
 
 namespace compax::testing
 {
@@ -29,16 +31,6 @@ namespace compax::testing
     return bed;
   }
 
-  /// The contact model of the FE2 tests: Material 1 of Gonzalez 2018
-  /// (E = 5 GPa, nu = 0.25, plastic stress 150 MPa, m = 2; K_Ic 1.26 MPa
-  /// m^1/2).
-  inline dem::ContactModel
-  material1()
-  {
-    return dem::ContactModel(dem::ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
-                             1.26e6);
-  }
-
   /// FE2 points of one drawn 60-particle packing, solved tightly (the
   /// tests compare states to 1e-12).
   inline coupling::RveMaterialSpec
@@ -46,7 +38,7 @@ namespace compax::testing
   {
     coupling::RveMaterialSpec spec;
     spec.packing.particle_count              = 60;
-    spec.packing.sizes.median_radius         = 220e-6;
+    spec.packing.sizes.median_radius         = material1::R;
     spec.packing.seed                        = 9;
     spec.pool_size                           = 1;
     spec.loading.equilibrium.force_tolerance = 1e-10;

@@ -8,6 +8,8 @@
 #include "dem/rve/periodic_packing.h"
 #include "dem/rve/rve_loading.h"
 
+#include "tests/support/gonzalez_material1.h"
+#include "tests/support/narrow_polydisperse_cell.h"
 #include "tests/support/temporary_folder.h"
 
 #include <gtest/gtest.h>
@@ -22,8 +24,8 @@ namespace fs = std::filesystem;
 
 namespace
 {
-  const dem::ElastoplasticMaterial material1{5e9, 0.25, 150e6, 2.0};
-  constexpr double                 R = 220e-6;
+  namespace material1 = compax::testing::material1;
+  using material1::R;
 
   class RveArchive : public compax::testing::TemporaryFolderTest
   {
@@ -35,17 +37,10 @@ namespace
   dem::PeriodicBed
   loaded_cell(const dem::ContactModel &model)
   {
-    dem::PeriodicPackingSpec spec;
-    spec.particle_count      = 80;
-    spec.sizes.median_radius = R;
-    spec.sizes.log_sigma     = 0.1;
-    spec.sizes.min_radius    = 0.8 * R;
-    spec.sizes.max_radius    = 1.25 * R;
-    spec.relative_density    = 0.58;
-    spec.seed                = 5;
-    dem::PeriodicBed bed     = dem::make_periodic_packing(spec, model);
-    dem::RveLoading  loading(model);
-    const double     rho0 = bed.relative_density();
+    dem::PeriodicBed bed = dem::make_periodic_packing(
+      compax::testing::narrow_polydisperse_cell(80, R, 1.25, 0.58, 5), model);
+    dem::RveLoading loading(model);
+    const double    rho0 = bed.relative_density();
     for (const double rho : {0.64, 0.68, 0.71, 0.74})
       {
         Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
@@ -70,9 +65,9 @@ namespace
 
 TEST_F(RveArchive, RoundTripKeepsEveryField)
 {
-  const dem::ContactModel model(material1, 1.26e6);
-  const dem::PeriodicBed  bed  = loaded_cell(model);
-  const std::string       file = (dir / "rve.h5").string();
+  const dem::ContactModel model = material1::contact_model();
+  const dem::PeriodicBed  bed   = loaded_cell(model);
+  const std::string       file  = (dir / "rve.h5").string();
   coupling::save_rve(file, bed);
   const dem::PeriodicBed back = coupling::load_rve(file, model);
 
@@ -115,7 +110,7 @@ TEST_F(RveArchive, RoundTripKeepsEveryField)
 
 TEST_F(RveArchive, OneMoreStepFromTheRestoredStateEqualsTheOriginal)
 {
-  const dem::ContactModel model(material1, 1.26e6);
+  const dem::ContactModel model    = material1::contact_model();
   dem::PeriodicBed        original = loaded_cell(model);
   const std::string       file     = (dir / "rve.h5").string();
   coupling::save_rve(file, original);
@@ -155,8 +150,8 @@ TEST_F(RveArchive, OneMoreStepFromTheRestoredStateEqualsTheOriginal)
 
 TEST_F(RveArchive, NotAnRveArchiveIsRejected)
 {
-  const dem::ContactModel model(material1, 1.26e6);
-  const std::string       file = (dir / "other.h5").string();
+  const dem::ContactModel model = material1::contact_model();
+  const std::string       file  = (dir / "other.h5").string();
   {
     coupling::Hdf5ArchiveWriter w(file, {"something-else", ""});
     w.commit();

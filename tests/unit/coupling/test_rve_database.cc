@@ -5,6 +5,7 @@
 #include "fem/dpc_table.h"
 #include "fem/drucker_prager_cap.h"
 #include "fem/linear_elastic_material.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -47,13 +48,6 @@ namespace
     r.deformation = F;
     r.parent      = parent;
     return r;
-  }
-
-  dem::ContactModel
-  material1()
-  {
-    return dem::ContactModel(dem::ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
-                             1.26e6);
   }
 
   coupling::DatabaseSpec
@@ -169,7 +163,7 @@ TEST(DatabaseValidation, HypoelasticLawAlongATreeOfPaths)
  */
 TEST(RveDatabase, FittedCapAgainstTrainingAndHeldOutPaths)
 {
-  const dem::ContactModel  model = material1();
+  const dem::ContactModel  model = compax::testing::material1::contact_model();
   std::vector<RveDatabase> rve;
   // Frozen histories below jamming, as when the bounds below were set: on
   // the bonded path these 80-sphere gas packings scatter more (compaction

@@ -13,7 +13,7 @@ using namespace compax;
 
 namespace
 {
-  using compax::testing::material1;
+  namespace material1 = compax::testing::material1;
   using compax::testing::small_drawn_spec;
 
   fem::MaterialIncrement
@@ -47,7 +47,7 @@ namespace
 /// cut (never committed) trial leaves no trace.
 TEST(RveMaterial, CommitsOnlyCommittedIncrements)
 {
-  coupling::RveMaterial m(small_drawn_spec(), material1());
+  coupling::RveMaterial m(small_drawn_spec(), material1::contact_model());
   std::vector<double>   h(m.n_history());
   m.initialize(0.60, h);
   const double rho0 = m.relative_density(h);
@@ -126,7 +126,7 @@ namespace
 /// stress (central differences).
 TEST(RveMaterial, LoosePointPastItsJammingDensityStiffensWithExactTangent)
 {
-  coupling::RveMaterial m(small_drawn_spec(), material1());
+  coupling::RveMaterial m(small_drawn_spec(), material1::contact_model());
   std::vector<double>   h(m.n_history());
   m.initialize(0.60, h);
   const double jam = m.jamming_density(0);
@@ -165,7 +165,7 @@ TEST(RveMaterial, TangentIsDerivativeOfStressInTheIncrement)
     {
       coupling::RveMaterialSpec spec = small_drawn_spec();
       spec.floor_stress              = scheme;
-      coupling::RveMaterial m(spec, material1());
+      coupling::RveMaterial m(spec, material1::contact_model());
       std::vector<double>   h(m.n_history());
       m.initialize(0.60, h);
       compact(m, h, 20, -0.01);
@@ -238,8 +238,8 @@ TEST(RveMaterial, FloorStressDoesNotRemainAfterUnloadingAJammedPoint)
                             accumulated_spec = small_drawn_spec();
   accumulated_spec.floor_stress              = FloorStress::accumulated;
   ASSERT_EQ(released_spec.floor_stress, FloorStress::released_at_jamming);
-  coupling::RveMaterial released(released_spec, material1()),
-    accumulated(accumulated_spec, material1());
+  coupling::RveMaterial released(released_spec, material1::contact_model()),
+    accumulated(accumulated_spec, material1::contact_model());
   std::vector<double> h(released.n_history()), g(accumulated.n_history());
   released.initialize(0.60, h);
   accumulated.initialize(0.60, g);

@@ -23,14 +23,15 @@ namespace
 {
   constexpr double R = 100e-6;
 
-  using compax::testing::material1;
+  namespace material1 = compax::testing::material1;
 
   /// A pool of one simple cubic lattice at spacing a.
   coupling::RveMaterialSpec
   lattice_spec(const double a)
   {
     coupling::RveMaterialSpec spec;
-    spec.pool = {compax::testing::simple_cubic_cell(a, R, material1())};
+    spec.pool
+      = {compax::testing::simple_cubic_cell(a, R, material1::contact_model())};
     spec.compaction_axis                     = 2;
     spec.tangent_floor_modulus               = 1e3;
     spec.loading.equilibrium.force_tolerance = 1e-10;
@@ -126,7 +127,7 @@ namespace
 
 TEST_F(RveMaterialCheckpoint, LoadedMaterialContinuesAsTheSavedOne)
 {
-  const dem::ContactModel model = material1();
+  const dem::ContactModel model = material1::contact_model();
   coupling::RveMaterial   original(lattice_spec(spacing), model);
   Histories               h = initialize(original, densities);
   // Two committed steps (the first switches the dense points to their
@@ -193,7 +194,7 @@ TEST_F(RveMaterialCheckpoint, LoadedMaterialContinuesAsTheSavedOne)
 
 TEST_F(RveMaterialCheckpoint, CheckpointOfOtherPointsOrPoolIsRefused)
 {
-  const dem::ContactModel model = material1();
+  const dem::ContactModel model = material1::contact_model();
   coupling::RveMaterial   saved(lattice_spec(spacing), model);
   Histories               h = initialize(saved, densities);
   step(saved, h, increment(-1e-3, 0.0), rotation(0.0));
@@ -239,7 +240,7 @@ TEST_F(RveMaterialCheckpoint, CheckpointOfOtherPointsOrPoolIsRefused)
 TEST_F(RveMaterialCheckpoint, DrawnPackingContinuesAsTheSavedOne)
 {
   const coupling::RveMaterialSpec spec  = compax::testing::small_drawn_spec();
-  const dem::ContactModel         model = material1();
+  const dem::ContactModel         model = material1::contact_model();
   coupling::RveMaterial           original(spec, model);
   Histories                       h = initialize(original, {0.6});
   for (int k = 0; k < 20; ++k)

@@ -20,7 +20,7 @@ namespace
 {
   constexpr double R = 100e-6;
 
-  using compax::testing::material1;
+  namespace material1 = compax::testing::material1;
 
   double
   mean_coordinate(const std::vector<dealii::Point<2>> &points,
@@ -36,7 +36,7 @@ namespace
 
 TEST(RveMaterialLattice, Fe2TabletOfSimpleCubicLatticeFollowsThePairLaw)
 {
-  const dem::ContactModel   model  = material1();
+  const dem::ContactModel   model  = material1::contact_model();
   const double              gamma0 = 0.01 * R, a = 2 * R - gamma0;
   coupling::RveMaterialSpec spec;
   spec.pool            = {compax::testing::simple_cubic_cell(a, R, model)};

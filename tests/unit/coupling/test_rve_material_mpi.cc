@@ -32,8 +32,7 @@ namespace
   std::vector<fem::TabletStep>
   fe2_cycle(MPI_Comm comm)
   {
-    const dem::ContactModel model(
-      dem::ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0}, 1.26e6);
+    const dem::ContactModel model = compax::testing::material1::contact_model();
     coupling::RveMaterialSpec spec;
     spec.pool
       = {compax::testing::simple_cubic_cell(2 * R - 0.010 * R, R, model),

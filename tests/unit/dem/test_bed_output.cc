@@ -4,6 +4,7 @@
 
 #include "dem/analysis/bed_statistics.h"
 #include "dem/io/particle_vtu.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -12,10 +13,12 @@
 #include <unistd.h>
 
 using namespace compax::dem;
+namespace material1 = compax::testing::material1;
 
 namespace
 {
-  constexpr double R = 220e-6, overlap = 2e-6;
+  using material1::R;
+  constexpr double overlap = 2e-6;
 
   Bed
   column_of_three(const ContactModel &model)
@@ -30,17 +33,11 @@ namespace
     bed.contacts.rebuild(bed.particles, bed.walls, model);
     return bed;
   }
-
-  ContactModel
-  material_1()
-  {
-    return ContactModel({5e9, 0.25, 150e6, 2.0}, 1.26e6);
-  }
 } // namespace
 
 TEST(BedStatistics, LoadedContactsOfAColumnFollowTheLaw)
 {
-  const auto model   = material_1();
+  const auto model   = material1::contact_model();
   const Bed  bed     = column_of_three(model);
   const auto network = loaded_contacts(bed);
   ASSERT_EQ(network.forces.size(), 2u);
@@ -63,7 +60,7 @@ TEST(BedStatistics, HistogramCountsEveryForceOnce)
 
 TEST(ParticleVtu, SnapshotHasEveryParticleAndItsCoordination)
 {
-  const auto model = material_1();
+  const auto model = material1::contact_model();
   const Bed  bed   = column_of_three(model);
   const auto file  = std::filesystem::temp_directory_path()
                     / ("compax-vtu-" + std::to_string(::getpid()) + ".vtu");

@@ -2,6 +2,7 @@
 // formed on converged states hold a cluster together and carry tension,
 // and Eq. (13) changes histories on converged states only.
 #include "dem/solver/load_stepper.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -12,14 +13,13 @@ using namespace compax::dem;
 
 namespace
 {
-  // Material 1 of Gonzalez 2018, Table 1.
-  constexpr double E = 5e9, nu = 0.25, kappa = 150e6, m = 2.0, R = 220e-6;
-  constexpr double K_Ic = 1.26e6;
+  using compax::testing::material1::R;
 
+  /// Material 1 of Gonzalez 2018, with or without bridges to the walls.
   ContactModel
   material1(bool wall_bonding)
   {
-    ContactModel model(ElastoplasticMaterial{E, nu, kappa, m}, K_Ic);
+    ContactModel model = compax::testing::material1::contact_model();
     model.wall_bonding = wall_bonding;
     return model;
   }

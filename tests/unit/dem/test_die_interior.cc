@@ -1,22 +1,19 @@
 #include "dem/die/die_compaction.h"
 #include "dem/die/die_interior.h"
 #include "dem/die/die_setup.h"
+#include "tests/support/deposited_die.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 using namespace compax::dem;
+namespace material1 = compax::testing::material1;
 
 namespace
 {
   constexpr double pi = 3.14159265358979323846;
-
-  ContactModel
-  material1()
-  {
-    return ContactModel(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0}, 1.26e6);
-  }
 } // namespace
 
 /// A simple cubic lattice of equal spheres overlapping by gamma fills a die.
@@ -40,7 +37,7 @@ TEST(DieInterior, CubicLatticeGivesTheClosedForm)
           if (x.head<2>().norm() < bed.walls.radius() - R)
             bed.particles.add(x, R);
         }
-  const ContactModel model = material1();
+  const ContactModel model = material1::contact_model();
   bed.contacts             = ContactSet(0.3 * R);
   bed.contacts.rebuild(bed.particles, bed.walls, model);
   ASSERT_FALSE(bed.contacts.pairs.empty());
@@ -85,12 +82,8 @@ TEST(DieInterior, CubicLatticeGivesTheClosedForm)
 /// solid fraction is the die's relative density.
 TEST(DieInterior, WholeDieStressIsThePunchPressure)
 {
-  DepositionParameters dp;
-  dp.n_particles           = 150;
-  dp.die_diameter          = 3e-3;
-  dp.seed                  = 3;
-  Bed                bed   = fill_die(dp);
-  const ContactModel model = material1();
+  Bed                bed   = compax::testing::deposited_die(150, 3e-3, 3);
+  const ContactModel model = material1::contact_model();
   DieProtocol        protocol;
   protocol.compaction_targets
     = density_targets(bed.relative_density(), 0.75, 12);

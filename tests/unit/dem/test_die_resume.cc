@@ -5,6 +5,8 @@
 
 #include "dem/die/die_compaction.h"
 #include "dem/die/die_setup.h"
+#include "tests/support/deposited_die.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -18,19 +20,15 @@ namespace
   struct Study
   {
     Bed          bed;
-    ContactModel model{ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0}, 1.26e6};
+    ContactModel model = compax::testing::material1::contact_model();
     DieProtocol  protocol;
   };
 
   Study
   small_study()
   {
-    DepositionParameters dp;
-    dp.n_particles  = 120;
-    dp.die_diameter = 3e-3;
-    dp.seed         = 5;
     Study s;
-    s.bed = fill_die(dp);
+    s.bed = compax::testing::deposited_die(120, 3e-3, 5);
     s.protocol.compaction_targets
       = density_targets(s.bed.relative_density(), 0.78, 12);
     s.protocol.unloading_points    = {0.7, 0.78};

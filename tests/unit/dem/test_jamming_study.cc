@@ -4,6 +4,7 @@
 // bridge's pull-off of the law (Eq. 4 with K_Ic = 0) while keeping the
 // materials.
 #include "dem/die/jamming_study.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -11,6 +12,7 @@
 #include <sstream>
 
 using namespace compax::dem;
+namespace material1 = compax::testing::material1;
 
 namespace
 {
@@ -68,8 +70,7 @@ TEST(JammingStudy, FitUsesOnlyTheJammedCompactionStates)
 /// harder; on first loading both laws agree.
 TEST(JammingStudy, ZeroToughnessKeepsMaterialsAndRemovesBridges)
 {
-  const ContactModel bonded(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
-                            1.26e6);
+  const ContactModel bonded   = material1::contact_model();
   const ContactModel unbonded = with_fracture_toughness(bonded, 0.0);
   ASSERT_EQ(unbonded.n_materials(), 1u);
   EXPECT_EQ(unbonded.fracture_toughness(0, 0), 0.0);
@@ -81,7 +82,7 @@ TEST(JammingStudy, ZeroToughnessKeepsMaterialsAndRemovesBridges)
   // its breakage overlap: the bridge pulls (K_Ic > 0) where the unbonded
   // contact does not pull harder; in compression beyond gamma_p, where a
   // > a_p, both laws are the same plastic loading curve.
-  const double R   = 220e-6;
+  const double R   = material1::R;
   const auto   lb  = bonded.pair_law(0, R, 0, R);
   const auto   lu  = unbonded.pair_law(0, R, 0, R);
   const double a_p = R / 10, gamma_p = lb.plastic_overlap(a_p);

@@ -7,6 +7,8 @@
 #include "dem/contact/hertz.h"
 #include "dem/contact/multicontact_adhesive.h"
 #include "dem/contact/pair_properties.h"
+#include "dem/numbers.h"
+#include "elastic_sphere.h"
 
 #include <gtest/gtest.h>
 
@@ -18,17 +20,11 @@ namespace
 {
   using namespace compax::dem;
 
-  constexpr double pi = 3.14159265358979323846;
+  using namespace compax::dem::contact_test;
 
-  struct Material
-  {
-    double R, E, nu;
-  };
-
-  // MCC-A and MCC-P moduli of Table 2, two radii, and a rigid flat.
-  const Material particle_a{100e-6, 2.58e8, 0.30};
-  const Material particle_b{150e-6, 1.34e9, 0.30};
-  const Material wall{rigid, rigid, 0.0};
+  // MCC-A and MCC-P moduli of Table 2, two radii; the rigid flat is rigid_flat.
+  const ElasticSphere particle_a{100e-6, 2.58e8, 0.30};
+  const ElasticSphere particle_b{150e-6, 1.34e9, 0.30};
 
   MulticontactAdhesiveLaw::Parameters
   table3()
@@ -44,7 +40,7 @@ namespace
   }
 
   MulticontactAdhesiveLaw
-  make_law(const Material                            &m2,
+  make_law(const ElasticSphere                       &m2,
            const MulticontactAdhesiveLaw::Parameters &p = table3())
   {
     return MulticontactAdhesiveLaw::for_pair(
@@ -52,7 +48,7 @@ namespace
   }
 
   double
-  reduced_radius(const Material &m2)
+  reduced_radius(const ElasticSphere &m2)
   {
     return particle_a.R * m2.R / (particle_a.R + m2.R);
   }
@@ -65,7 +61,7 @@ namespace
 
   // k1 = 4/3 E sqrt(R), E with the inverse.
   double
-  k1_of(const Material &m2)
+  k1_of(const ElasticSphere &m2)
   {
     const double E
       = 1.0
@@ -77,9 +73,9 @@ namespace
   }
 
   // Eq. (11) read as an interpolation between k1 and k2 (Fig. 3), with
-  // delta*_max of Eq. (12) (2 Ri Rj/(Ri+Rj); 2 Ri for a wall).
+  // delta*_max of Eq. (12) (2 Ri Rj/(Ri+Rj); 2 Ri for a rigid_flat).
   double
-  k2_star(const Material                            &m2,
+  k2_star(const ElasticSphere                       &m2,
           const MulticontactAdhesiveLaw::Parameters &p,
           double                                     delta_max)
   {
@@ -126,9 +122,50 @@ namespace
     return h;
   }
 
+  /// The un/reloading branch of particle_a's law with a partner for one
+  /// delta_max: it leaves the loading branch k1 x at delta_max with slope
+  /// k2* (x = delta^{3/2}).
+  struct UnloadingBranch
+  {
+    const MulticontactAdhesiveLaw &law;
+    double                         k1, delta_max, k2_star;
+
+    /// The branch's force at overlap d.
+    double
+    force(const double d) const
+    {
+      return k1 * x_of(delta_max) + k2_star * (x_of(d) - x_of(delta_max));
+    }
+  };
+
+  /// Calls @p check with the branch of particle_a's single-contact law
+  /// (parameters @p p without the multi-contact term) with particle_b and
+  /// with the rigid_flat, at each delta_max of @p fractions times the reduced
+  /// radius.
+  void
+  for_each_unloading_branch(
+    MulticontactAdhesiveLaw::Parameters                 p,
+    const std::initializer_list<double>                 fractions,
+    const std::function<void(const UnloadingBranch &)> &check)
+  {
+    p.multicontact_prefactor = 0;
+    for (const ElasticSphere &m2 : {particle_b, rigid_flat})
+      {
+        const MulticontactAdhesiveLaw law = make_law(m2, p);
+        const double                  R
+          = std::isinf(m2.R) ? reduced_radius_wall() : reduced_radius(m2);
+        const double k1 = k1_of(m2);
+        for (const double fraction : fractions)
+          {
+            const double dmax = fraction * R;
+            check(UnloadingBranch{law, k1, dmax, k2_star(m2, p, dmax)});
+          }
+      }
+  }
+
   TEST(MulticontactAdhesive, LoadingStiffnessUsesInverseEffectiveModulus)
   {
-    for (const Material &m2 : {particle_b, wall})
+    for (const ElasticSphere &m2 : {particle_b, rigid_flat})
       {
         const MulticontactAdhesiveLaw law = make_law(m2);
         EXPECT_NEAR(law.loading_stiffness(), k1_of(m2), 1e-13 * k1_of(m2));
@@ -138,39 +175,35 @@ namespace
 
   TEST(MulticontactAdhesive, PlasticOverlapIsZeroForceCrossing)
   {
-    auto p                   = table3();
-    p.multicontact_prefactor = 0;
+    auto p = table3();
     // phi_f = 0.99 (k2* interpolates) and 0.005 (k2* = k2).
     for (const double phi : {0.99, 0.005})
-      for (const Material &m2 : {particle_b, wall})
-        {
-          p.plasticity_depth                = phi;
-          const MulticontactAdhesiveLaw law = make_law(m2, p);
-          const double                  R
-            = std::isinf(m2.R) ? reduced_radius_wall() : reduced_radius(m2);
-          const double k1 = k1_of(m2);
-          for (const double dmax : {0.002 * R, 0.05 * R, 0.2 * R})
-            {
-              const double k2s = k2_star(m2, p, dmax);
-              EXPECT_NEAR(law.unloading_stiffness(dmax), k2s, 1e-12 * k2s);
-              // Unloading line through (x_max, k1 x_max) crosses zero.
-              const auto line = [&](double d) {
-                return k1 * x_of(dmax) + k2s * (x_of(d) - x_of(dmax));
-              };
-              const double d0 = bisect(line, 0.0, dmax);
-              EXPECT_NEAR(law.plastic_overlap(dmax), d0, 1e-12 * dmax);
-              // The law's own force vanishes there.
-              const double F = law.evaluate(d0, history_with_max(dmax)).force;
-              EXPECT_NEAR(F, 0.0, 1e-9 * k1 * x_of(dmax));
-            }
-        }
+      {
+        p.plasticity_depth = phi;
+        for_each_unloading_branch(
+          p, {0.002, 0.05, 0.2}, [](const UnloadingBranch &b) {
+            EXPECT_NEAR(b.law.unloading_stiffness(b.delta_max),
+                        b.k2_star,
+                        1e-12 * b.k2_star);
+            // Unloading line through (x_max, k1 x_max) crosses zero.
+            const double d0
+              = bisect([&](double d) { return b.force(d); }, 0.0, b.delta_max);
+            EXPECT_NEAR(b.law.plastic_overlap(b.delta_max),
+                        d0,
+                        1e-12 * b.delta_max);
+            // The law's own force vanishes there.
+            const double F
+              = b.law.evaluate(d0, history_with_max(b.delta_max)).force;
+            EXPECT_NEAR(F, 0.0, 1e-9 * b.k1 * x_of(b.delta_max));
+          });
+      }
   }
 
   TEST(MulticontactAdhesive, UnloadingSlopeIsInterpolatedK2Star)
   {
     auto p                            = table3();
     p.multicontact_prefactor          = 0;
-    const Material               &m2  = particle_b;
+    const ElasticSphere          &m2  = particle_b;
     const MulticontactAdhesiveLaw law = make_law(m2, p);
     const double                  R   = reduced_radius(m2);
     const double                  k1  = k1_of(m2);
@@ -198,40 +231,32 @@ namespace
 
   TEST(MulticontactAdhesive, MinimumOverlapMeetsAdhesiveBranch)
   {
-    auto p                   = table3();
-    p.multicontact_prefactor = 0;
+    auto p = table3();
     for (const double kc : {0.5, 3.0})
-      for (const Material &m2 : {particle_b, wall})
-        {
-          p.adhesion_stiffness_ratio        = kc;
-          const MulticontactAdhesiveLaw law = make_law(m2, p);
-          const double                  R
-            = std::isinf(m2.R) ? reduced_radius_wall() : reduced_radius(m2);
-          const double k1 = k1_of(m2);
-          for (const double dmax : {0.01 * R, 0.1 * R, 2.0 * R})
-            {
-              const double k2s  = k2_star(m2, p, dmax);
-              const auto   meet = [&](double d) {
-                return k1 * x_of(dmax) + k2s * (x_of(d) - x_of(dmax))
-                       + kc * k1 * x_of(d);
-              };
-              const double dmin = bisect(meet, 0.0, dmax);
-              EXPECT_NEAR(law.minimum_overlap(dmax), dmin, 1e-12 * dmax);
-              // Eq. (8).
-              const double Fmin = -kc * k1 * x_of(dmin);
-              EXPECT_NEAR(law.minimum_force(dmax),
-                          Fmin,
-                          1e-10 * std::abs(Fmin));
-              EXPECT_NEAR(law.evaluate(dmin, history_with_max(dmax)).force,
-                          Fmin,
-                          1e-9 * std::abs(Fmin));
-              // Below delta_min the adhesive branch.
-              const double d = 0.5 * dmin;
-              EXPECT_NEAR(law.evaluate(d, history_with_max(dmax)).force,
-                          -kc * k1 * x_of(d),
-                          1e-12 * kc * k1 * x_of(d));
-            }
-        }
+      {
+        p.adhesion_stiffness_ratio = kc;
+        for_each_unloading_branch(
+          p, {0.01, 0.1, 2.0}, [kc](const UnloadingBranch &b) {
+            const MulticontactAdhesiveLaw &law  = b.law;
+            const double                   k1   = b.k1;
+            const double                   dmax = b.delta_max;
+            const auto                     meet
+              = [&](double d) { return b.force(d) + kc * k1 * x_of(d); };
+            const double dmin = bisect(meet, 0.0, dmax);
+            EXPECT_NEAR(law.minimum_overlap(dmax), dmin, 1e-12 * dmax);
+            // Eq. (8).
+            const double Fmin = -kc * k1 * x_of(dmin);
+            EXPECT_NEAR(law.minimum_force(dmax), Fmin, 1e-10 * std::abs(Fmin));
+            EXPECT_NEAR(law.evaluate(dmin, history_with_max(dmax)).force,
+                        Fmin,
+                        1e-9 * std::abs(Fmin));
+            // Below delta_min the adhesive branch.
+            const double d = 0.5 * dmin;
+            EXPECT_NEAR(law.evaluate(d, history_with_max(dmax)).force,
+                        -kc * k1 * x_of(d),
+                        1e-12 * kc * k1 * x_of(d));
+          });
+      }
   }
 
   // A load-unload-reload path through every branch.
@@ -252,13 +277,13 @@ namespace
 
   TEST(MulticontactAdhesive, ReducesToHertz)
   {
-    MulticontactAdhesiveLaw::Parameters p;
+    // k2 = k1, no adhesion and no multi-contact term (Table 3's nu).
+    auto p                      = table3();
     p.unloading_stiffness_ratio = 1;
     p.adhesion_stiffness_ratio  = 0;
     p.plasticity_depth          = 0.5;
     p.multicontact_prefactor    = 0;
-    p.poisson_ratio             = 0.3;
-    for (const Material &m2 : {particle_b, wall})
+    for (const ElasticSphere &m2 : {particle_b, rigid_flat})
       {
         const MulticontactAdhesiveLaw law   = make_law(m2, p);
         const HertzLaw                hertz = HertzLaw::for_pair(
@@ -283,7 +308,7 @@ namespace
   {
     auto p           = table3();
     p.pull_off_force = -1e-4;
-    for (const Material &m2 : {particle_b, wall})
+    for (const ElasticSphere &m2 : {particle_b, rigid_flat})
       {
         const MulticontactAdhesiveLaw law = make_law(m2, p);
         const double                  R   = law.effective_radius();
@@ -315,7 +340,7 @@ namespace
   {
     auto p           = table3();
     p.pull_off_force = -2e-4;
-    for (const Material &m2 : {particle_b, wall})
+    for (const ElasticSphere &m2 : {particle_b, rigid_flat})
       for (const double pressure : {-3e6, 1e6})
         {
           const MulticontactAdhesiveLaw law = make_law(m2, p);

@@ -1,5 +1,6 @@
 #include "dem/neighbors/cell_grid.h"
 #include "dem/solver/contact_set.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -40,11 +41,10 @@ TEST(NeighborsContactSet, HistorySurvivesRebuildsAndSeparation)
   ParticleSystem p;
   random_bed(p, 300, 11);
   DieWalls walls;
-  walls.diameter    = 20e-3; // far away
-  walls.lower_punch = -1.0;
-  walls.upper_punch = 1.0;
-  const ContactModel model(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
-                           1.26e6);
+  walls.diameter           = 20e-3; // far away
+  walls.lower_punch        = -1.0;
+  walls.upper_punch        = 1.0;
+  const ContactModel model = compax::testing::material1::contact_model();
   ContactSet         set(30e-6);
   set.rebuild(p, walls, model);
   ASSERT_GT(set.pairs.size(), 10u);

@@ -11,6 +11,7 @@
 #include "dem/nonlocal/elastic_die_stepper.h"
 #include "dem/nonlocal/nonlocal_bed_system.h"
 #include "dem/nonlocal/nonlocal_trust_region.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include "nonlocal_test_support.h"
 
@@ -169,8 +170,7 @@ namespace
         elastic.nonlocal  = nonlocal;
         protocol.elastic  = elastic;
         // The bonded law is not used with elastic spheres.
-        const ContactModel model(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
-                                 1.26e6);
+        const ContactModel model = compax::testing::material1::contact_model();
         DieCompaction      die(bed, model, protocol);
         std::ostringstream csv;
         die.set_output(&csv, nullptr);

@@ -5,6 +5,8 @@
 #include "dem/contact/hertz.h"
 #include "dem/contact/nonlocal_hertz.h"
 #include "dem/contact/pair_properties.h"
+#include "dem/numbers.h"
+#include "elastic_sphere.h"
 
 #include <gtest/gtest.h>
 
@@ -18,21 +20,15 @@ namespace
 {
   using namespace compax::dem;
 
-  constexpr double pi = 3.14159265358979323846;
+  using namespace compax::dem::contact_test;
 
-  struct Material
-  {
-    double R, E, nu;
-  };
-
-  // Two different materials, and a rigid flat.
-  const Material sphere_a{100e-6, 5.0e9, 0.30};
-  const Material sphere_b{150e-6, 8.0e9, 0.42};
-  const Material wall{rigid, rigid, 0.0};
+  // Two different materials; the rigid flat is rigid_flat.
+  const ElasticSphere sphere_a{100e-6, 5.0e9, 0.30};
+  const ElasticSphere sphere_b{150e-6, 8.0e9, 0.42};
 
   // Eq. (9), written out here.
   double
-  hertz_coefficient(const Material &m1, const Material &m2)
+  hertz_coefficient(const ElasticSphere &m1, const ElasticSphere &m2)
   {
     const double inverse
       = 0.75 * ((1 - m1.nu * m1.nu) / m1.E + (1 - m2.nu * m2.nu) / m2.E)
@@ -42,7 +38,7 @@ namespace
 
   // Eq. (5), written out here.
   double
-  eq5(double P, double theta, const Material &m)
+  eq5(double P, double theta, const ElasticSphere &m)
   {
     if (std::isinf(m.R))
       return 0.0;
@@ -71,7 +67,7 @@ namespace
 
   TEST(NonlocalHertz, ReducesToHertzWithoutNonlocalOverlap)
   {
-    for (const Material &other : {sphere_b, wall})
+    for (const ElasticSphere &other : {sphere_b, rigid_flat})
       {
         const NonlocalHertzLaw law = NonlocalHertzLaw::for_pair(
           sphere_a.R, sphere_a.E, sphere_a.nu, other.R, other.E, other.nu);
@@ -93,7 +89,7 @@ namespace
 
   TEST(NonlocalHertz, ForceStiffnessAndRadiusWithNonlocalOverlap)
   {
-    for (const Material &other : {sphere_b, wall})
+    for (const ElasticSphere &other : {sphere_b, rigid_flat})
       {
         const NonlocalHertzLaw law = NonlocalHertzLaw::for_pair(
           sphere_a.R, sphere_a.E, sphere_a.nu, other.R, other.E, other.nu);
@@ -146,7 +142,8 @@ namespace
 
   TEST(NonlocalHertz, Eq11IsEq5AtThetaPi)
   {
-    for (const Material &m : {sphere_a, sphere_b, Material{0.01, 1.85e6, 0.46}})
+    for (const ElasticSphere &m :
+         {sphere_a, sphere_b, ElasticSphere{0.01, 1.85e6, 0.46}})
       {
         const double F = 0.37;
         // Eq. (11) for one sphere.
@@ -198,11 +195,11 @@ namespace
   // e = n_H gamma^{1/2} / n_NL, is 5 n_H^4 / n_NL^3.
   TEST(NonlocalHertz, TataraReproducesSeriesOfEq12)
   {
-    for (const Material &other : {sphere_b, sphere_a, wall})
+    for (const ElasticSphere &other : {sphere_b, sphere_a, rigid_flat})
       {
-        const Material &m1  = sphere_a;
-        const double    n_H = hertz_coefficient(m1, other);
-        double          inverse_n_NL
+        const ElasticSphere &m1  = sphere_a;
+        const double         n_H = hertz_coefficient(m1, other);
+        double               inverse_n_NL
           = (1 + m1.nu) * (3 - 2 * m1.nu) / (4 * pi * m1.R * m1.E);
         if (!std::isinf(other.R))
           inverse_n_NL += (1 + other.nu) * (3 - 2 * other.nu)
@@ -275,8 +272,8 @@ namespace
               EXPECT_NEAR(2 * s.wall_overlap + (N - 1.0) * s.sphere_overlap,
                           Delta,
                           1e-14 * Delta);
-              const double n_s
-                = hertz_coefficient(Material{R, E, nu}, Material{R, E, nu});
+              const double n_s = hertz_coefficient(ElasticSphere{R, E, nu},
+                                                   ElasticSphere{R, E, nu});
               EXPECT_NEAR(
                 n_s
                   * std::pow(s.sphere_overlap + s.sphere_nonlocal_overlap, 1.5),
@@ -306,7 +303,7 @@ namespace
     std::vector<NonlocalBody> bodies(N, NonlocalBody{R, E, nu});
     bodies.push_back({rigid, rigid, 0.0});
     bodies.push_back({rigid, rigid, 0.0});
-    const double n_wall = hertz_coefficient({R, E, nu}, wall);
+    const double n_wall = hertz_coefficient({R, E, nu}, rigid_flat);
     const double n_s    = hertz_coefficient({R, E, nu}, {R, E, nu});
     std::vector<NonlocalContactNetwork::Contact> contacts;
     std::vector<double>                          gamma;
@@ -357,7 +354,7 @@ namespace
     for (int row = 0; row < 4; ++row)
       for (int col = 0; col < 4; ++col)
         {
-          const Material &m = (row + col) % 2 ? sphere_a : sphere_b;
+          const ElasticSphere &m = (row + col) % 2 ? sphere_a : sphere_b;
           k.bodies.push_back({R, m.E, m.nu});
           k.x.emplace_back(spacing * (col + 0.5 * (row % 2)) + jitter(rng),
                            spacing * std::sqrt(0.75) * row + jitter(rng),
@@ -371,12 +368,12 @@ namespace
           const double          g = 2 * R - d.norm();
           if (g > 0)
             {
-              const Material mi{R,
-                                k.bodies[i].youngs_modulus,
-                                k.bodies[i].poisson_ratio};
-              const Material mj{R,
-                                k.bodies[j].youngs_modulus,
-                                k.bodies[j].poisson_ratio};
+              const ElasticSphere mi{R,
+                                     k.bodies[i].youngs_modulus,
+                                     k.bodies[i].poisson_ratio};
+              const ElasticSphere mj{R,
+                                     k.bodies[j].youngs_modulus,
+                                     k.bodies[j].poisson_ratio};
               k.contacts.push_back(
                 {i, j, d.normalized(), hertz_coefficient(mi, mj)});
               k.gamma.push_back(g);
@@ -389,13 +386,15 @@ namespace
     k.bodies.push_back({rigid, rigid, 0.0});
     for (std::size_t i = 0; i < n; ++i)
       {
-        const Material mi{R,
-                          k.bodies[i].youngs_modulus,
-                          k.bodies[i].poisson_ratio};
+        const ElasticSphere mi{R,
+                               k.bodies[i].youngs_modulus,
+                               k.bodies[i].poisson_ratio};
         if (k.x[i].y() - R < bottom)
           {
-            k.contacts.push_back(
-              {i, n, Eigen::Vector3d(0, -1, 0), hertz_coefficient(mi, wall)});
+            k.contacts.push_back({i,
+                                  n,
+                                  Eigen::Vector3d(0, -1, 0),
+                                  hertz_coefficient(mi, rigid_flat)});
             k.gamma.push_back(bottom - (k.x[i].y() - R));
           }
         if (k.x[i].y() + R > top)
@@ -403,7 +402,7 @@ namespace
             k.contacts.push_back({i,
                                   n + 1,
                                   Eigen::Vector3d(0, 1, 0),
-                                  hertz_coefficient(mi, wall)});
+                                  hertz_coefficient(mi, rigid_flat)});
             k.gamma.push_back(k.x[i].y() + R - top);
           }
       }

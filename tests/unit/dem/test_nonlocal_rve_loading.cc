@@ -9,6 +9,7 @@
 #include "dem/rve/periodic_packing.h"
 
 #include "nonlocal_test_support.h"
+#include "tests/support/narrow_polydisperse_cell.h"
 
 #include <gtest/gtest.h>
 
@@ -84,16 +85,9 @@ namespace
   {
     const double E = 10e9, nu = 0.3, R = 100e-6;
     // A loose cell (contact model only for the packing's relaxation).
-    PeriodicPackingSpec spec;
-    spec.particle_count      = 30;
-    spec.sizes.median_radius = R;
-    spec.sizes.log_sigma     = 0.1;
-    spec.sizes.min_radius    = 0.8 * R;
-    spec.sizes.max_radius    = 1.2 * R;
-    spec.relative_density    = 0.55;
-    spec.seed                = 5;
     const ContactModel model(ElastoplasticMaterial{E, nu, 1e12, 2.0}, 0.0);
-    PeriodicBed        bed = make_periodic_packing(spec, model);
+    PeriodicBed        bed = make_periodic_packing(
+      compax::testing::narrow_polydisperse_cell(30, R, 1.2, 0.55, 5), model);
     NonlocalRveOptions o;
     o.materials        = {{E, nu}};
     o.nonlocal         = false;

@@ -5,6 +5,7 @@
 #include "dem/rve/homogenization.h"
 #include "dem/rve/periodic_assembler.h"
 #include "dem/rve/rve_loading.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -12,14 +13,11 @@
 #include <vector>
 
 using namespace compax::dem;
+namespace material1 = compax::testing::material1;
+using material1::R;
 
 namespace
 {
-  // Material 1 of Gonzalez 2018 (Table 1) with bonds, as the other RVE
-  // tests use it.
-  const ElastoplasticMaterial material1{5e9, 0.25, 150e6, 2.0};
-  constexpr double            R = 220e-6;
-
   PeriodicBed
   deposited_cell()
   {
@@ -83,7 +81,7 @@ namespace
 /// equilibrium to the relaxation's tolerance or the force resolution.
 TEST(RveBondedPath, UnjammedRelaxationsCommitHistoriesFrozenDoNot)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model  = material1::contact_model();
   PeriodicBed        bonded = deposited_cell();
   PeriodicBed        frozen = bonded;
   RveLoading         bonded_loading(model, options(RveConsolidation::none));
@@ -131,8 +129,8 @@ TEST(RveBondedPath, UnjammedRelaxationsCommitHistoriesFrozenDoNot)
 /// every particle and every a_p, a_B as they were.
 TEST(RveBondedPath, FailedSubstepLeavesHistoriesUntouched)
 {
-  const ContactModel model(material1, 1.26e6);
-  PeriodicBed        bed = deposited_cell();
+  const ContactModel model = material1::contact_model();
+  PeriodicBed        bed   = deposited_cell();
   RveLoading         loading(model, options(RveConsolidation::none));
   // Compact until some history exists, then on into jamming.
   bool loose_with_history = false, jammed = false;
@@ -202,8 +200,8 @@ TEST(RveBondedPath, FailedSubstepLeavesHistoriesUntouched)
 /// such a step by FIRE instead.
 TEST(RveBondedPath, JammingIsSticky)
 {
-  const ContactModel model(material1, 1.26e6);
-  PeriodicBed        bed = deposited_cell();
+  const ContactModel model = material1::contact_model();
+  PeriodicBed        bed   = deposited_cell();
   RveLoading         loading(model, options(RveConsolidation::none));
   const double       p_jam = loading.options().jamming_pressure;
   ASSERT_FALSE(loading.jammed(bed));
@@ -268,7 +266,7 @@ namespace
   std::vector<bool>
   expect_loose_states_balanced(const UnjammedEquilibrium unjammed)
   {
-    const ContactModel model(material1, 1.26e6);
+    const ContactModel model  = material1::contact_model();
     PeriodicBed        bed    = deposited_cell();
     RveLoadingOptions  opts   = options(RveConsolidation::none);
     opts.unjammed_equilibrium = unjammed;
@@ -293,6 +291,7 @@ namespace
           relaxed.push_back(r.relaxed);
       }
     EXPECT_GT(relaxed.size(), 5u); // the path had loose states to balance
+    EXPECT_TRUE(loading.jammed(bed));
     return relaxed;
   }
 } // namespace

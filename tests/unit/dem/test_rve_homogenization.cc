@@ -2,6 +2,8 @@
 #include "dem/rve/periodic_bed_system.h"
 #include "dem/rve/periodic_packing.h"
 #include "dem/rve/rve_loading.h"
+#include "tests/support/gonzalez_material1.h"
+#include "tests/support/narrow_polydisperse_cell.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -9,12 +11,11 @@
 #include <cmath>
 
 using namespace compax::dem;
+namespace material1 = compax::testing::material1;
+using material1::R;
 
 namespace
 {
-  const ElastoplasticMaterial material1{5e9, 0.25, 150e6, 2.0};
-  constexpr double            R = 220e-6;
-
   /// n^3 copies of a cubic motif of edge a (fractional positions).
   PeriodicBed
   cubic_lattice(const std::vector<Eigen::Vector3d> &motif,
@@ -68,15 +69,8 @@ namespace
   PeriodicBed
   trial_state(const ContactModel &model, const Eigen::Matrix3d &trial_strain)
   {
-    PeriodicPackingSpec spec;
-    spec.particle_count      = 60;
-    spec.sizes.median_radius = R;
-    spec.sizes.log_sigma     = 0.1;
-    spec.sizes.min_radius    = 0.8 * R;
-    spec.sizes.max_radius    = 1.2 * R;
-    spec.relative_density    = 0.60;
-    spec.seed                = 7;
-    PeriodicBed     bed      = make_periodic_packing(spec, model);
+    PeriodicBed bed = make_periodic_packing(
+      compax::testing::narrow_polydisperse_cell(60, R, 1.2, 0.60, 7), model);
     RveLoading      loading(model);
     Eigen::Matrix3d compress = Eigen::Matrix3d::Zero();
     compress(2, 2)           = -0.01;
@@ -102,7 +96,7 @@ namespace
 /// sigma = -P(gamma) / a^2 I, a = 2R - gamma (Love-Weber by hand).
 TEST(RveHomogenization, LoveWeberStressOfSimpleCubicLattice)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model = material1::contact_model();
   const double       gamma = 0.02 * R, a = 2 * R - gamma;
   const PeriodicBed bed = cubic_lattice({Eigen::Vector3d::Zero()}, a, 2, model);
   ASSERT_EQ(bed.contacts.pairs.size(), 8u * 6u / 2u + 0u);
@@ -121,7 +115,7 @@ TEST(RveHomogenization, LoveWeberStressOfSimpleCubicLattice)
 /// out: sigma = -(1/V) sum_c P l n n^T = -(N/V) 6 P l (4/12) I.
 TEST(RveHomogenization, LoveWeberStressOfFaceCentredCubicLattice)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model = material1::contact_model();
   const double       gamma = 0.03 * R, l = 2 * R - gamma;
   const double       a_c = std::sqrt(2.0) * l;
   const PeriodicBed  bed = cubic_lattice({Eigen::Vector3d(0, 0, 0),
@@ -144,7 +138,7 @@ TEST(RveHomogenization, LoveWeberStressOfFaceCentredCubicLattice)
 /// with pairs touching through several images.
 TEST(RveHomogenization, PeriodicStiffnessEqualsDifferenceOfResidual)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model = material1::contact_model();
   PeriodicBed        bed
     = cubic_lattice({Eigen::Vector3d::Zero(), Eigen::Vector3d(0.5, 0.5, 0.5)},
                     2 * R * 1.1,
@@ -186,7 +180,7 @@ TEST(RveHomogenization, PeriodicStiffnessEqualsDifferenceOfResidual)
 /// motion is an equilibrium, so the condensed tangent equals the affine one.
 TEST(RveHomogenization, CondensedEqualsAffineForSimpleCubicLattice)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model = material1::contact_model();
   PeriodicBed        bed
     = cubic_lattice({Eigen::Vector3d::Zero()}, 2 * R * 0.97, 2, model);
   TangentCalculator  tangent;
@@ -200,7 +194,7 @@ TEST(RveHomogenization, CondensedEqualsAffineForSimpleCubicLattice)
 /// trial state of a disordered cell.
 TEST(RveHomogenization, CondensedTangentEqualsFiniteDifference)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model = material1::contact_model();
   for (const double trial : {-0.002, 0.0005})
     {
       PeriodicBed        bed = trial_state(model, uniaxial(trial));
@@ -240,7 +234,7 @@ TEST(RveHomogenization, CondensedTangentEqualsFiniteDifference)
 /// changes nothing else.
 TEST(RveHomogenization, RigidRotationRotatesStressOnly)
 {
-  const ContactModel    model(material1, 1.26e6);
+  const ContactModel    model = material1::contact_model();
   PeriodicBed           bed   = trial_state(model, uniaxial(-0.002));
   const Eigen::Matrix3d sigma = love_weber_stress(bed);
 

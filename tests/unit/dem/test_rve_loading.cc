@@ -1,18 +1,18 @@
 #include "dem/rve/homogenization.h"
 #include "dem/rve/periodic_packing.h"
 #include "dem/rve/rve_loading.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 using namespace compax::dem;
+namespace material1 = compax::testing::material1;
+using material1::R;
 
 namespace
 {
-  const ElastoplasticMaterial material1{5e9, 0.25, 150e6, 2.0};
-  constexpr double            R = 220e-6;
-
   PeriodicPackingSpec
   small_spec()
   {
@@ -29,9 +29,9 @@ namespace
 /// density below jamming, and is reproducible.
 TEST(RveLoading, PackingIsLooseVirginAndReproducible)
 {
-  const ContactModel model(material1, 1.26e6);
-  const PeriodicBed  a = make_periodic_packing(small_spec(), model);
-  const PeriodicBed  b = make_periodic_packing(small_spec(), model);
+  const ContactModel model = material1::contact_model();
+  const PeriodicBed  a     = make_periodic_packing(small_spec(), model);
+  const PeriodicBed  b     = make_periodic_packing(small_spec(), model);
   EXPECT_NEAR(a.relative_density(), 0.55, 1e-9);
   EXPECT_TRUE(a.deformation.isIdentity());
   for (std::size_t i = 0; i < a.particles.size(); ++i)
@@ -53,9 +53,9 @@ TEST(RveLoading, PackingIsLooseVirginAndReproducible)
 /// and every converged state is in equilibrium.
 TEST(RveLoading, UniaxialStrainCompactsAndJams)
 {
-  const ContactModel model(material1, 1.26e6);
-  PeriodicBed        bed  = make_periodic_packing(small_spec(), model);
-  const double       rho0 = bed.relative_density();
+  const ContactModel model = material1::contact_model();
+  PeriodicBed        bed   = make_periodic_packing(small_spec(), model);
+  const double       rho0  = bed.relative_density();
   RveLoading         loading(model);
   Eigen::Matrix3d    step = Eigen::Matrix3d::Zero();
   step(2, 2)              = -0.01;

@@ -2,18 +2,18 @@
 /// on the bonded path (make_rve_packing()).
 #include "dem/rve/homogenization.h"
 #include "dem/rve/rve_packing.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 using namespace compax::dem;
+namespace material1 = compax::testing::material1;
+using material1::R;
 
 namespace
 {
-  const ElastoplasticMaterial material1{5e9, 0.25, 150e6, 2.0};
-  constexpr double            R = 220e-6;
-
   PeriodicPackingSpec
   spec(const PackingProtocol protocol, const double rho)
   {
@@ -36,7 +36,7 @@ namespace
 /// force, and no contact has deformed plastically.
 TEST(RvePacking, DepositCompactedUniaxiallyToTheDensityAskedFor)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model = material1::contact_model();
   const PeriodicBed  deposit
     = make_rve_deposit(spec(PackingProtocol::deposited, 0.0));
   const double      rho_dep = deposit.relative_density();
@@ -82,7 +82,7 @@ TEST(RvePacking, DepositCompactedUniaxiallyToTheDensityAskedFor)
 /// make_periodic_packing().
 TEST(RvePacking, DenserDepositRejectedOrKeptGasUnchanged)
 {
-  const ContactModel model(material1, 1.26e6);
+  const ContactModel model = material1::contact_model();
   const double rho_dep = make_rve_deposit(spec(PackingProtocol::deposited, 0.0))
                            .relative_density();
   try

@@ -3,6 +3,8 @@
 #include "dem/solver/consolidation.h"
 #include "dem/solver/contact_assembler.h"
 #include "dem/solver/trust_region_newton.h"
+#include "tests/support/deposited_die.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -10,15 +12,7 @@
 #include <sstream>
 
 using namespace compax::dem;
-
-namespace
-{
-  ContactModel
-  material1()
-  {
-    return ContactModel(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0}, 1.26e6);
-  }
-} // namespace
+namespace material1 = compax::testing::material1;
 
 /// The inline plastic branch of the assembler reproduces the law's own
 /// response on every branch: virgin, plastic reloading, elastic unloading
@@ -27,9 +21,12 @@ TEST(SolverConsolidation, InlineResponseEqualsLaw)
 {
   for (const double m : {2.0, 3.0})
     {
-      const ElastoplasticMaterial mat{5e9, 0.25, 150e6, m};
+      const ElastoplasticMaterial mat{material1::E,
+                                      material1::nu,
+                                      material1::kappa,
+                                      m};
       const auto                  law = BondedElastoplasticLaw::for_pair(
-        mat, 220e-6, mat, 220e-6, 1.26e6, 0.01, true);
+        mat, material1::R, mat, material1::R, material1::K_Ic, 0.01, true);
       const double a_p = law.plastic_radius(2e-6);
       for (const ContactHistory h : {ContactHistory{0.0, 0.0},
                                      ContactHistory{a_p, 0.0},
@@ -57,12 +54,8 @@ TEST(SolverConsolidation, InlineResponseEqualsLaw)
 /// variable changed (consolidation never updates histories).
 TEST(SolverConsolidation, LooseDepositJamsWithBalancedPunches)
 {
-  DepositionParameters dp;
-  dp.n_particles           = 300;
-  dp.die_diameter          = 3.5e-3;
-  dp.seed                  = 5;
-  Bed                bed   = fill_die(dp);
-  const ContactModel model = material1();
+  Bed                bed   = compax::testing::deposited_die(300, 3.5e-3, 5);
+  const ContactModel model = material1::contact_model();
   const double       rho0  = bed.relative_density();
   EXPECT_LT(rho0, 0.55);
 
@@ -106,12 +99,10 @@ TEST(SolverConsolidation, LooseDepositJamsWithBalancedPunches)
 /// net force is within the solver tolerance and the punch forces balance.
 TEST(SolverConsolidation, ThousandParticlesReach085)
 {
-  DepositionParameters dp;
-  dp.n_particles           = 1000;
-  dp.die_diameter          = 10e-3 * std::cbrt(1000.0 / 6512.0);
-  dp.seed                  = 1;
-  Bed                bed   = fill_die(dp);
-  const ContactModel model = material1();
+  Bed                bed   = compax::testing::deposited_die(1000,
+                                           10e-3 * std::cbrt(1000.0 / 6512.0),
+                                           1);
+  const ContactModel model = material1::contact_model();
   DieProtocol        protocol;
   protocol.compaction_targets
     = density_targets(bed.relative_density(), 0.85, 21);

@@ -1,4 +1,5 @@
 #include "dem/solver/load_stepper.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +12,11 @@ namespace
   constexpr double pi = 3.14159265358979323846;
 
   // Material 1 of Gonzalez 2018, Table 1.
-  constexpr double E = 5e9, nu = 0.25, kappa = 150e6, m = 2.0, R = 220e-6;
+  using compax::testing::material1::E;
+  using compax::testing::material1::kappa;
+  using compax::testing::material1::m;
+  using compax::testing::material1::nu;
+  using compax::testing::material1::R;
 
   /// Plastic loading written out from Gonzalez 2018 Sec. 2-3, independently
   /// of compax: P = n_p a^{2+1/m}, a^2 = 2 c^2 R* gamma,
@@ -40,12 +45,6 @@ namespace
   const PlasticLaw sphere_flat{R, kappa};
   const PlasticLaw sphere_sphere{R / 2, kappa *std::pow(2.0, -1.0 / m)};
 
-  ContactModel
-  material1()
-  {
-    return ContactModel(ElastoplasticMaterial{E, nu, kappa, m}, 1.26e6);
-  }
-
   double
   net_force_check(Bed &bed, const ContactModel &model, ContactSums &sums)
   {
@@ -61,7 +60,7 @@ namespace
 /// without a bridge (no bonding with walls by default).
 TEST(SolverEquilibrium, SphereBetweenPunches)
 {
-  const ContactModel model = material1();
+  const ContactModel model = compax::testing::material1::contact_model();
   Bed                bed;
   bed.walls.diameter    = 10 * R;
   bed.walls.upper_punch = 2 * R;
@@ -107,7 +106,7 @@ TEST(SolverEquilibrium, SphereBetweenPunches)
 /// them from sliding past each other and does not act horizontally.
 TEST(SolverEquilibrium, SpheresPressedAgainstDieWall)
 {
-  const ContactModel model = material1();
+  const ContactModel model = compax::testing::material1::contact_model();
   Bed                bed;
   const double       total = 0.08 * R, gamma_z = 0.02 * R;
   bed.walls.diameter    = 4 * R - total;
@@ -147,7 +146,7 @@ TEST(SolverEquilibrium, SpheresPressedAgainstDieWall)
 /// the solver.
 TEST(SolverEquilibrium, SimpleCubicColumnAndRattler)
 {
-  const ContactModel model = material1();
+  const ContactModel model = compax::testing::material1::contact_model();
   const int          N     = 6;
   Bed                bed;
   bed.walls.diameter    = 12 * R;

@@ -1,4 +1,5 @@
 #include "dem/solver/contact_assembler.h"
+#include "tests/support/gonzalez_material1.h"
 
 #include <gtest/gtest.h>
 
@@ -6,15 +7,15 @@
 #include <random>
 
 using namespace compax::dem;
+namespace material1 = compax::testing::material1;
 
 /// K = dF/dx against a central finite difference of F on a small random
 /// bed whose contacts are in plastic loading, in elastic unloading with a
 /// solid bridge (a < a_B = a_p), and against the punches and the die wall.
 TEST(SolverStiffness, EqualsCentralDifferenceOfResidual)
 {
-  const ElastoplasticMaterial mat{5e9, 0.25, 150e6, 2.0};
-  const ContactModel          model(mat, 1.26e6);
-  const double                R = 220e-6;
+  const ContactModel model = material1::contact_model();
+  const double       R     = material1::R;
 
   Bed bed;
   // Spacing 0.94 (2R): every face neighbour overlaps by 0.045R..0.2R, far

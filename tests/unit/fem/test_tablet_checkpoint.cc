@@ -2,6 +2,7 @@
 // state of the uninterrupted cycle.
 #include "fem/drucker_prager_cap.h"
 #include "fem/tablet_process.h"
+#include "mcc_tablet.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -13,28 +14,11 @@
 #include <vector>
 
 namespace fem = compax::fem;
+using compax::testing::mcc_material;
+using compax::testing::mcc_tablet_settings;
 
 namespace
 {
-  fem::TabletSolverSettings
-  settings()
-  {
-    fem::TabletSolverSettings s;
-    s.geometry.die_diameter    = 10e-3;
-    s.geometry.fill_height     = 7e-3;
-    s.geometry.n_radial_cells  = 4;
-    s.wall_friction            = 0.25;
-    s.initial_relative_density = 0.5;
-    return s;
-  }
-
-  std::shared_ptr<const fem::MaterialModel>
-  mcc()
-  {
-    return std::make_shared<fem::DruckerPragerCap>(
-      fem::DpcTable::microcrystalline_cellulose());
-  }
-
   fem::TabletProcess
   process()
   {
@@ -56,7 +40,9 @@ TEST(TabletCheckpoint, ResumedCycleEndsInTheUninterruptedState)
 
   std::vector<fem::TabletStep> full;
   {
-    fem::TabletSolver<2> solver(settings(), mcc(), MPI_COMM_SELF);
+    fem::TabletSolver<2> solver(mcc_tablet_settings(),
+                                mcc_material(),
+                                MPI_COMM_SELF);
     ASSERT_TRUE(fem::run_tablet_process<2>(
       solver, process(), [&](const fem::TabletStep &st) {
         full.push_back(st);
@@ -66,7 +52,9 @@ TEST(TabletCheckpoint, ResumedCycleEndsInTheUninterruptedState)
   }
   std::vector<fem::TabletStep> resumed;
   {
-    fem::TabletSolver<2> solver(settings(), mcc(), MPI_COMM_SELF);
+    fem::TabletSolver<2> solver(mcc_tablet_settings(),
+                                mcc_material(),
+                                MPI_COMM_SELF);
     solver.load_state(folder);
     ASSERT_TRUE(fem::run_tablet_process<2>(
       solver,
@@ -89,12 +77,14 @@ TEST(TabletCheckpoint, ResumedCycleEndsInTheUninterruptedState)
     }
 
   // A checkpoint of another mesh is refused.
-  fem::TabletSolverSettings other = settings();
+  fem::TabletSolverSettings other = mcc_tablet_settings();
   other.geometry.n_radial_cells   = 5;
-  fem::TabletSolver<2> solver(settings(), mcc(), MPI_COMM_SELF);
+  fem::TabletSolver<2> solver(mcc_tablet_settings(),
+                              mcc_material(),
+                              MPI_COMM_SELF);
   std::filesystem::create_directories(folder);
   solver.save_state(folder);
-  fem::TabletSolver<2> wrong(other, mcc(), MPI_COMM_SELF);
+  fem::TabletSolver<2> wrong(other, mcc_material(), MPI_COMM_SELF);
   EXPECT_THROW(wrong.load_state(folder), std::runtime_error);
   std::filesystem::remove_all(folder);
 }

@@ -4,6 +4,7 @@
 // the Coulomb friction of the sliding wall.
 #include "fem/drucker_prager_cap.h"
 #include "fem/tablet_process.h"
+#include "mcc_tablet.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -18,16 +19,10 @@ namespace fem = compax::fem;
 
 TEST(TabletDpcProcess, CompactionUnloadingEjection)
 {
-  fem::TabletSolverSettings s;
-  s.geometry.die_diameter    = 10e-3;
-  s.geometry.fill_height     = 7e-3;
-  s.geometry.n_radial_cells  = 4;
-  s.wall_friction            = 0.25;
-  s.initial_relative_density = 0.5;
-  const auto material        = std::make_shared<fem::DruckerPragerCap>(
-    fem::DpcTable::microcrystalline_cellulose());
-  fem::TabletSolver<2> solver(s, material, MPI_COMM_WORLD);
-  fem::TabletProcess   process;
+  const fem::TabletSolverSettings s = compax::testing::mcc_tablet_settings();
+  const auto                      material = compax::testing::mcc_material();
+  fem::TabletSolver<2>            solver(s, material, MPI_COMM_WORLD);
+  fem::TabletProcess              process;
   process.compaction_steps = 40;
   process.unloading_steps  = 10;
   process.ejection_steps   = 30;

@@ -2,6 +2,7 @@
 // node count and a relative density in its physical range.
 #include "fem/drucker_prager_cap.h"
 #include "fem/tablet_solver.h"
+#include "mcc_tablet.h"
 
 #include <deal.II/base/hdf5.h>
 #include <deal.II/base/mpi.h>
@@ -33,18 +34,12 @@ TEST(TabletHdf5Output, FieldsReopenWithTheMeshAndAPhysicalDensity)
     std::filesystem::create_directories(folder);
   MPI_Barrier(MPI_COMM_WORLD);
 
-  fem::TabletSolverSettings s;
-  s.geometry.die_diameter    = 10e-3;
-  s.geometry.fill_height     = 7e-3;
-  s.geometry.n_radial_cells  = 4;
-  s.wall_friction            = 0.25;
-  const double rho0          = 0.5;
-  s.initial_relative_density = rho0;
-  fem::TabletSolver<2>           solver(s,
-                              std::make_shared<fem::DruckerPragerCap>(
-                                fem::DpcTable::microcrystalline_cellulose()),
+  const fem::TabletSolverSettings s    = compax::testing::mcc_tablet_settings();
+  const double                    rho0 = s.initial_relative_density;
+  fem::TabletSolver<2>            solver(s,
+                              compax::testing::mcc_material(),
                               MPI_COMM_WORLD);
-  std::vector<dealii::XDMFEntry> entries;
+  std::vector<dealii::XDMFEntry>  entries;
   for (unsigned int step = 1; step <= 4; ++step)
     {
       ASSERT_TRUE(solver.advance(7e-3 - step * 0.25e-3, 0.0));

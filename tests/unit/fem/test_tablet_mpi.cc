@@ -3,6 +3,7 @@
 // label mpi); on one rank it compares a run with itself.
 #include "fem/drucker_prager_cap.h"
 #include "fem/tablet_process.h"
+#include "mcc_tablet.h"
 
 #include "../../support/equal_tablet_cycles.h"
 
@@ -21,15 +22,8 @@ namespace
   std::vector<fem::TabletStep>
   cycle(MPI_Comm comm)
   {
-    fem::TabletSolverSettings s;
-    s.geometry.die_diameter    = 10e-3;
-    s.geometry.fill_height     = 7e-3;
-    s.geometry.n_radial_cells  = 6;
-    s.wall_friction            = 0.25;
-    s.initial_relative_density = 0.5;
-    fem::TabletSolver<2> solver(s,
-                                std::make_shared<fem::DruckerPragerCap>(
-                                  fem::DpcTable::microcrystalline_cellulose()),
+    fem::TabletSolver<2> solver(compax::testing::mcc_tablet_settings(6),
+                                compax::testing::mcc_material(),
                                 comm);
     fem::TabletProcess   p;
     p.compaction_displacement = 2.5e-3;

@@ -1,0 +1,13 @@
+#include "apps/common/voigt_columns.h"
+
+namespace compax::cli
+{
+  std::vector<std::string>
+  voigt_columns(const std::string &tensor)
+  {
+    std::vector<std::string> columns;
+    for (const char *component : {"xx", "yy", "zz", "yz", "xz", "xy"})
+      columns.push_back(tensor + "_" + component);
+    return columns;
+  }
+} // namespace compax::cli
