@@ -44,9 +44,10 @@ namespace compax::dem
   double
   RveLoading::balanced_force_floor(const PeriodicBed &bed) const
   {
+    const double R = bed.particles.mean_radius();
     return std::max(opts.equilibrium.force_floor,
-                    opts.equilibrium.force_tolerance * force_resolution(bed)
-                      / opts.force_floor_fraction);
+                    opts.equilibrium.force_tolerance * opts.jamming_pressure
+                      * pi * R * R);
   }
 
   bool

@@ -1,5 +1,6 @@
 #include "dem/die/die_compaction.h"
 #include "dem/die/die_setup.h"
+#include "dem/numbers.h"
 
 #include <gtest/gtest.h>
 
@@ -152,8 +153,8 @@ namespace
     EXPECT_NO_THROW(die.run());
     const double jamming = 0.5e6;
     const double tol     = EquilibriumOptions{}.force_tolerance;
-    const double floor   = tol * jamming * 3.14159265358979323846
-                         * std::pow(bed.particles.mean_radius(), 2);
+    const double floor
+      = tol * jamming * pi * std::pow(bed.particles.mean_radius(), 2);
     double           first_jammed = 0.0;
     std::vector<int> relaxed;
     for (const DieRecord &r : die.records())
