@@ -543,19 +543,24 @@ namespace compax::cli
       return s;
     }
 
-    /// Punch pressure against mean relative density over the compaction
-    /// rows of a tablet.csv.
+    /// Punch pressure against relative density over the compaction rows of
+    /// a tablet.csv. The density is the rigid die's, rho_0 H_0 / H with H
+    /// the punch gap (the lower punch rests during compaction), as the
+    /// particle die measures it: the mesh's mean density also counts the
+    /// penalty wall's give, which grows with the wall pressure.
     DensitySeries
-    tablet_compaction(const CsvTable &t)
+    tablet_compaction(const CsvTable &t, const Fill &fill)
     {
       DensitySeries s;
       const auto   &stage = t.text("stage");
-      const auto    rho   = t.numbers("mean_relative_density");
+      const auto    upper = t.numbers("upper_punch_displacement");
+      const auto    lower = t.numbers("lower_punch_displacement");
       const auto    p     = t.numbers("upper_punch_pressure");
       for (std::size_t k = 0; k < t.rows(); ++k)
         if (stage[k] == "compaction")
           {
-            s.x.push_back(rho[k]);
+            const double gap = fill.height - upper[k] - lower[k];
+            s.x.push_back(fill.relative_density * fill.height / gap);
             s.y.push_back(p[k]);
           }
       return s;
@@ -591,8 +596,14 @@ namespace compax::cli
     }
 
     void
-    plot(const fs::path &folder, const bool with_fe2)
+    plot(const fs::path &folder, const Fill &fill, const bool with_fe2)
     {
+      // The rigid die's density of tablet_compaction().
+      const std::string rigid_die_density
+        = "(" + number(fill.relative_density * fill.height) + "/("
+          + number(fill.height)
+          + "-column('upper_punch_displacement')"
+            "-column('lower_punch_displacement')))";
       const std::string compaction
         = "(strcol('stage') eq 'compaction' ? column('upper_punch_pressure')"
           "/1e6 : 1/0)";
@@ -620,11 +631,10 @@ namespace compax::cli
         << compaction
         << " with points pt 7 ps 0.6 title 'particle die', "
            "'tablet-database/tablet.csv' using "
-           "(column('mean_relative_density')):"
-        << compaction << " with lines lw 2 title 'tablet, database mode'"
-        << (with_fe2 ? ", 'tablet-fe2/tablet.csv' using "
-                       "(column('mean_relative_density')):"
-                         + compaction
+        << rigid_die_density << ":" << compaction
+        << " with lines lw 2 title 'tablet, database mode'"
+        << (with_fe2 ? ", 'tablet-fe2/tablet.csv' using " + rigid_die_density
+                         + ":" + compaction
                          + " with linespoints pt 6 lw 2 title 'tablet, FE2'"
                      : "")
         << ", 'compare.csv' using (strcol('comparison') eq "
@@ -695,7 +705,9 @@ namespace compax::cli
                "value: the homogenized moduli of the RVE unloaded from the "
                "same in-die density rho_max), punch_pressure (upper punch "
                "pressure against in-die relative density during compaction; "
-               "reference the particle die, value the database-mode tablet), "
+               "reference the particle die, value the database-mode tablet, "
+               "whose density is the rigid die's, rho_0 H_0 / H from the "
+               "punch gap, as in the particle die), "
                "ejection_pressure (mu times the residual die-wall force "
                "after unloading from the final density over the punch area, "
                "Sec. 5.4, for both), fe2_vs_database (punch pressure of the "
@@ -860,7 +872,7 @@ namespace compax::cli
         if (fs::is_regular_file(folder / database.folder / "tablet.csv"))
           tablet.emplace(folder / database.folder / "tablet.csv");
         const DensitySeries tablet_p
-          = tablet ? tablet_compaction(*tablet) : DensitySeries{};
+          = tablet ? tablet_compaction(*tablet, fill) : DensitySeries{};
         for (auto &r :
              compare_series("punch_pressure", die_p, tablet_p, density_reach))
           rows.push_back(r);
@@ -896,7 +908,8 @@ namespace compax::cli
         DensitySeries fe2_p;
         if (fe2.ran && fs::is_regular_file(folder / fe2.folder / "tablet.csv"))
           fe2_p
-            = tablet_compaction(CsvTable(folder / fe2.folder / "tablet.csv"));
+            = tablet_compaction(CsvTable(folder / fe2.folder / "tablet.csv"),
+                                fill);
         for (auto &r :
              compare_series("fe2_vs_database", tablet_p, fe2_p, density_reach))
           rows.push_back(r);
@@ -916,7 +929,7 @@ namespace compax::cli
           }
 
         write_comparison_csv(folder / "compare.csv", rows);
-        plot(folder, fe2.ran && !fe2_p.x.empty());
+        plot(folder, fill, fe2.ran && !fe2_p.x.empty());
 
         // compare.md: what was compared, how each study went.
         std::ofstream md(folder / "compare.md");

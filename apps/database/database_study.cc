@@ -84,15 +84,13 @@ namespace compax::cli
   void
   declare_database_parameters(dealii::ParameterHandler &prm)
   {
-    // The gas stays the default here: the cap fit of a small deposited
-    // cell on the bonded path can find its compaction state above the
-    // shear line (80 spheres, seed 5). So does the frozen-history loose
-    // regime: on the bonded path the FE2 tablet of compax compare's
-    // built-in default stops at rho = 0.677 (it completes with frozen
-    // histories); Multiscale declares its RVEs here.
-    declare_rve_cell_parameters(prm, "compressed-gas");
+    // The deposited cell on the bonded path, balanced below jamming, as in
+    // compax rve: the database, the multiscale tablet and the FE2 pool start
+    // from the same loose state as the die's interior. compressed-gas and
+    // frozen-history stay selectable for comparison.
+    declare_rve_cell_parameters(prm, "deposited");
     declare_database_paths(prm);
-    declare_rve_solver_parameters(prm, "frozen-history");
+    declare_rve_solver_parameters(prm, "none");
   }
 
   DatabaseStudy

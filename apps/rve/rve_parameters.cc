@@ -282,10 +282,11 @@ namespace compax::cli
       "the deposit itself when it is denser than asked (the tablet's fill). "
       "compressed-gas: spheres inserted at random at the "
       "Insertion density and compressed hydrostatically with frozen "
-      "histories to the Initial relative density (virgin). The default is "
-      "deposited in compax rve, compressed-gas in compax database and "
-      "compax tablet's Multiscale subsection (a small deposited cell's cap "
-      "fit can find its compaction state above the shear line).");
+      "histories to the Initial relative density (virgin), the former "
+      "default, for comparison. deposited is the default everywhere; a "
+      "small deposited cell can give compax database a degenerate cap fit "
+      "(40 spheres: negative Poisson's ratio and zero cap pressure; 200 "
+      "spheres, the default, fit).");
     declare_quantity(prm,
                      "Initial relative density",
                      "0.55",
