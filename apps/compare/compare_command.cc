@@ -231,6 +231,7 @@ namespace compax::cli
       Settings            die; // everything for compax die
       int                 rve_particles = 0, rve_seed = 0, rve_shear_steps = 0;
       double              rve_strain_step = 0.0;
+      std::vector<double> loose_branches;
       int  tablet_cells = 0, tablet_steps = 0, tablet_unloading_steps = 0;
       bool fe2           = true;
       int  fe2_particles = 0, fe2_pool = 0, fe2_cells = 0, fe2_steps = 0,
@@ -370,6 +371,22 @@ namespace compax::cli
                         Integer(2, 10000),
                         "Steps of each shear probe of the database, in [2, "
                         "1e4]. Unit: -.");
+      declare_quantity(
+        prm,
+        "Loose branches",
+        "0.65, 0.7",
+        dealii::Patterns::List(dealii::Patterns::Double(0, 1), 0),
+        "-",
+        "Further densities at which the RVE database branches, below the "
+        "first of Die/Unloading points (the larger ones are ignored), so "
+        "that the tablet's DPC table reaches into the loose powder: below "
+        "its lowest row the table keeps that row's cohesion and moduli (p_b "
+        "extrapolates), so a table through the unloading points alone gives "
+        "the loose powder the stiffness of a compact (measured on the "
+        "built-in default: 2.7 MPa at rho 0.58, where the particle die "
+        "carries 0.18 MPa). Each must lie where the RVE is jammed (an "
+        "unjammed branch has no moduli and the database stops); empty: "
+        "none.");
       prm.leave_subsection();
 
       prm.enter_subsection("Tablet");
@@ -461,6 +478,7 @@ namespace compax::cli
       c.rve_seed        = prm.get_integer("Seed");
       c.rve_strain_step = prm.get_double("Compaction strain step");
       c.rve_shear_steps = prm.get_integer("Shear steps");
+      c.loose_branches  = get_real_list(prm, "Loose branches");
       prm.leave_subsection();
 
       prm.enter_subsection("Tablet");
@@ -801,12 +819,20 @@ namespace compax::cli
               }
           }
         // The database branches where the die was unloaded (above the
-        // deposited density, where an RVE can start).
+        // deposited density, where an RVE can start) and at the loose
+        // branches below them.
         std::vector<double> branches;
+        for (const double u : c.loose_branches)
+          if (u > fill.relative_density && u < c.unloading_points.front())
+            branches.push_back(u);
+        std::sort(branches.begin(), branches.end());
+        branches.erase(std::unique(branches.begin(), branches.end()),
+                       branches.end());
+        const std::size_t n_loose = branches.size();
         for (const double u : c.unloading_points)
           if (u > fill.relative_density)
             branches.push_back(u);
-        if (branches.size() < 2)
+        if (branches.size() - n_loose < 2)
           reject_entry("Die/Unloading points",
                        c.unloading_list,
                        "at least two must exceed the deposited bed's "

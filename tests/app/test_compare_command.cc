@@ -60,6 +60,7 @@ namespace
                            "subsection RVE\n"
                            "  set Number of particles = 40\n"
                            "  set Shear steps = 4\n"
+                           "  set Loose branches =\n"
                            "end\n"
                            "subsection Tablet\n"
                            "  set Radial cells = 1\n"
