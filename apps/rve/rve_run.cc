@@ -6,7 +6,7 @@
 #include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
 #include "apps/common/voigt_columns.h"
-#include "apps/rve/rve_measures.h"
+#include "dem/rve/rve_measures.h"
 #include "apps/rve/rve_snapshot.h"
 #include "coupling/elastic_moduli.h"
 #include "coupling/rve_archive.h"
@@ -384,7 +384,7 @@ namespace compax::cli
       const Eigen::Matrix3d eps = dem::logarithmic_strain(bed.deformation);
       const Eigen::Matrix3d sigma
         = elastic ? elastic->stress(bed) : dem::love_weber_stress(bed);
-      RveMeasures m;
+      dem::RveMeasures m;
       if (elastic)
         {
           m.coordination_number           = elastic->coordination(bed);
@@ -392,7 +392,7 @@ namespace compax::cli
           m.rattler_fraction              = nan;
         }
       else
-        m = measure_rve(bed);
+        m = dem::measure_rve(bed);
       auto set = [&](const char *name, double v) { row[rve_column(name)] = v; };
       set("step", step);
       set("stage", unloading ? 1.0 : 0.0);
