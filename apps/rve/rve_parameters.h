@@ -4,6 +4,7 @@
 #include "dem/rve/nonlocal_rve_loading.h"
 #include "dem/rve/periodic_packing.h"
 #include "dem/rve/rve_loading.h"
+#include "dem/rve/rve_path_study.h"
 #include "dem/solver/contact_model.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -16,16 +17,9 @@
 
 namespace compax::cli
 {
-  /// The macroscopic strain paths of `compax rve`.
-  enum class RvePath
-  {
-    /// F = diag(1, 1, rho_0 / rho): die-like compaction along z.
-    uniaxial,
-    /// F = (rho_0 / rho)^(1/3) I.
-    hydrostatic,
-    /// F <- (I + eps_k) F for the strain increments eps_k of a CSV file.
-    csv
-  };
+  /// The macroscopic strain paths of `compax rve` (Path = csv is
+  /// RvePath::increments).
+  using RvePath = dem::RveStrainPath;
 
   /// Everything `compax rve` reads from its .prm, in the library's types.
   struct RveStudy
