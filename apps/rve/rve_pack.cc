@@ -1,6 +1,5 @@
 #include "apps/rve/rve_pack.h"
 
-#include "apps/rve/rve_run.h"
 #include "dem/rve/rve_packing.h"
 
 #include <iostream>
@@ -27,7 +26,7 @@ namespace compax::cli
   {
     if (spec.protocol == dem::PackingProtocol::deposited)
       std::cout << "  deposit compacted on the "
-                << (dem::packing_loading(rve_path_options(study)).consolidation
+                << (dem::packing_loading(study).consolidation
                         == dem::RveConsolidation::none
                       ? "bonded path"
                       : "frozen-history path")
@@ -44,8 +43,9 @@ namespace compax::cli
     dem::PeriodicBed bed;
     try
       {
-        bed = dem::make_rve_packing(
-          spec, study.model, dem::packing_loading(rve_path_options(study)));
+        bed = dem::make_rve_packing(spec,
+                                    study.model,
+                                    dem::packing_loading(study));
       }
     catch (const dem::DepositDensityError &e)
       {

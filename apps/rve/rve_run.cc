@@ -80,27 +80,6 @@ namespace compax::cli
     }
   } // namespace
 
-  dem::RvePathStudyOptions
-  rve_path_options(const RveStudy &study)
-  {
-    dem::RvePathStudyOptions o;
-    o.path                = study.path;
-    o.target_density      = study.target_density;
-    o.steps               = study.steps;
-    o.unload              = study.unload;
-    o.unloading_step      = study.unloading_step;
-    o.max_unloading_steps = study.max_unloading_steps;
-    o.increments          = study.increments;
-    o.tangent_interval    = study.tangent_interval;
-    o.fd_interval         = study.fd_interval;
-    o.fd_strain_step      = study.fd_strain_step;
-    o.fd_force_tolerance  = study.fd_force_tolerance;
-    o.elastic             = study.elastic;
-    o.loading             = study.loading;
-    o.stop_after          = study.stop_after;
-    return o;
-  }
-
   RvePathOutput::RvePathOutput(const RveStudy       &study,
                                std::filesystem::path folder,
                                const RveProgress    *resumed)
@@ -281,9 +260,7 @@ namespace compax::cli
       std::cout << "Resuming from " << study.resume_from << " at step "
                 << resumed->rows.size() - 1 << " (relative density "
                 << state.bed.relative_density() << ")" << std::endl;
-    dem::RvePathStudy path(study.model,
-                           rve_path_options(study),
-                           std::move(state));
+    dem::RvePathStudy path(study.model, study, std::move(state));
     return output.finish(path.run(output.observer()), path);
   }
 } // namespace compax::cli

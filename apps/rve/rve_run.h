@@ -11,10 +11,6 @@
 
 namespace compax::cli
 {
-  /// The library's options of the study's path.
-  dem::RvePathStudyOptions
-  rve_path_options(const RveStudy &study);
-
   struct RveOutcome
   {
     /// An ExitCode: success, or not_converged (last good state kept).

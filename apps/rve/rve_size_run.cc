@@ -17,8 +17,8 @@ namespace compax::cli
   int
   run_rve_size_study(const RveStudy &study, const std::filesystem::path &folder)
   {
-    const dem::RveSizeStudy sizes(
-      study.model, {study.packing, study.cell_sizes, rve_path_options(study)});
+    const dem::RveSizeStudy sizes(study.model,
+                                  {study.packing, study.cell_sizes, study});
     CsvWriter timing(folder / "timing.csv", {"particle_count", "seconds"});
     int       code = success;
     dem::PeriodicPackingSpec     spec;
