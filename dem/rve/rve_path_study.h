@@ -234,7 +234,10 @@ namespace compax::dem
                  RvePathStudyOptions options,
                  RvePathState        state);
 
-    /// Runs the path from the state to its end (or to stop_after).
+    /// Runs the path from the state to its end (or to stop_after). The
+    /// state is left where the run ended: a study built from state()
+    /// (e.g. with stop_after cleared) continues the path exactly as an
+    /// uninterrupted run would.
     RvePathResult
     run(const RvePathObserver &observer = {});
 

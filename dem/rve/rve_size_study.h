@@ -54,6 +54,8 @@ namespace compax::dem
     double spread = 0.0;
   };
 
+  /// What a size study computed: per cell its path and quantities, per
+  /// quantity the spread between the cells.
   struct RveSizeResult
   {
     /// The cells run, in order; a cell whose path failed is the last.
