@@ -683,7 +683,7 @@ namespace compax::cli
     const std::string path = prm.get("Path");
     s.path                 = path == "uniaxial"      ? RvePath::uniaxial
                              : path == "hydrostatic" ? RvePath::hydrostatic
-                                                     : RvePath::csv;
+                                                     : RvePath::increments;
     s.target_density       = prm.get_double("Target relative density");
     s.steps                = prm.get_integer("Loading steps");
     s.unload               = prm.get_bool("Unloading");
@@ -691,13 +691,13 @@ namespace compax::cli
     s.max_unloading_steps  = prm.get_integer("Maximum unloading steps");
     s.csv_file             = prm.get("Strain increments file");
     prm.leave_subsection();
-    if (s.path != RvePath::csv
+    if (s.path != RvePath::increments
         && s.target_density <= s.packing.relative_density)
       reject_entry("Strain path/Target relative density",
                    format_number(s.target_density),
                    "must exceed Packing/Initial relative density = "
                      + format_number(s.packing.relative_density));
-    if (s.path == RvePath::csv)
+    if (s.path == RvePath::increments)
       {
         if (s.csv_file.empty())
           reject_entry("Strain path/Strain increments file",

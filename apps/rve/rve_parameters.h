@@ -4,6 +4,7 @@
 #include "dem/rve/nonlocal_rve_loading.h"
 #include "dem/rve/periodic_packing.h"
 #include "dem/rve/rve_loading.h"
+#include "dem/rve/rve_path_study.h"
 #include "dem/solver/contact_model.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -16,19 +17,15 @@
 
 namespace compax::cli
 {
-  /// The macroscopic strain paths of `compax rve`.
-  enum class RvePath
-  {
-    /// F = diag(1, 1, rho_0 / rho): die-like compaction along z.
-    uniaxial,
-    /// F = (rho_0 / rho)^(1/3) I.
-    hydrostatic,
-    /// F <- (I + eps_k) F for the strain increments eps_k of a CSV file.
-    csv
-  };
+  /// The macroscopic strain paths of `compax rve` (Path = csv is
+  /// RvePath::increments).
+  using RvePath = dem::RveStrainPath;
 
-  /// Everything `compax rve` reads from its .prm, in the library's types.
-  struct RveStudy
+  /// Everything `compax rve` reads from its .prm, in the library's types:
+  /// the options of the path study (strain path, tangents and their
+  /// finite-difference checks, solvers, Stop after steps) and what the
+  /// command adds around it.
+  struct RveStudy : dem::RvePathStudyOptions
   {
     explicit RveStudy(dem::ContactModel model)
         : model(std::move(model))
@@ -40,43 +37,15 @@ namespace compax::cli
     /// How the size distribution was given (for the log).
     std::string size_description;
 
-    RvePath path = RvePath::uniaxial;
-    /// Relative density at the end of loading (uniaxial, hydrostatic) [-].
-    double target_density = 0.8;
-    /// Loading steps of equal density increment (uniaxial, hydrostatic).
-    int steps = 25;
-    /// Unload along the same path until the axial (uniaxial) or mean
-    /// stress vanishes.
-    bool unload = true;
-    /// Logarithmic strain per unloading step (uniaxial, hydrostatic) [-].
-    double unloading_step      = 5e-4;
-    int    max_unloading_steps = 500;
-    /// Strain increments of the csv path (tensor components).
-    std::vector<Eigen::Matrix3d> increments;
-    std::string                  csv_file;
-
-    /// Tangents every this many steps (0: only at the end of loading and
-    /// of the path).
-    int tangent_interval = 1;
-    /// Finite-difference check every this many unloading steps (0: never).
-    int    fd_interval    = 0;
-    double fd_strain_step = 1e-8;
-    /// Equilibrium force tolerance of the finite-difference solves [-].
-    double fd_force_tolerance = 1e-10;
+    /// The CSV of the strain increments of Path = csv.
+    std::string csv_file;
     /// VTU snapshots every this many steps (0: none).
     int snapshot_interval = 0;
 
     /// Particle counts of a cell-size study; empty: one run.
     std::vector<std::size_t> cell_sizes;
 
-    /// Elastic frictionless spheres (Contact/Contact law = elastic): Hertz
-    /// or the nonlocal formulation of Gonzalez & Cuitino 2012, stepped by
-    /// NonlocalRveLoading; empty: the bonded elasto-plastic law.
-    std::optional<dem::NonlocalRveOptions> elastic;
-    dem::RveLoadingOptions                 loading;
-
     int         checkpoint_interval = 0;
-    int         stop_after          = 0;
     std::string resume_from;
     /// The canonical text of the entries a checkpoint must have been
     /// written with to be resumed (all but Checkpoints and Size study; the

@@ -1,76 +1,72 @@
 #pragma once
 
+#include "apps/rve/rve_checkpoint.h"
 #include "apps/rve/rve_parameters.h"
 #include "dem/rve/periodic_bed.h"
+#include "dem/rve/rve_path_study.h"
 
-#include <Eigen/Core>
-
+#include <chrono>
 #include <filesystem>
-#include <string>
 #include <vector>
 
 namespace compax::cli
 {
-  /// Columns of rve.csv and moduli.csv (one row = one vector of numbers in
-  /// this order; the stage is 0 loading / 1 unloading, NaN an empty cell).
-  const std::vector<std::string> &
-  rve_columns();
-  const std::vector<std::string> &
-  moduli_columns();
-
-  /// Columns of timing.csv: per row of rve.csv computed by this run, the
-  /// seconds of its step and of its tangents (kept out of rve.csv and
-  /// moduli.csv, so that two runs of one study give the same files).
-  const std::vector<std::string> &
-  timing_columns();
-
-  /// Index of a column in rve_columns() / moduli_columns().
-  std::size_t
-  rve_column(const std::string &name);
-  std::size_t
-  moduli_column(const std::string &name);
-
-  /// Where a path stands: the rows written so far and what the rest of
-  /// the path needs (stored in checkpoints).
-  struct RveProgress
-  {
-    std::vector<std::vector<double>> rows;
-    std::vector<std::vector<double>> moduli;
-    /// Steps with a VTU snapshot.
-    std::vector<int> snapshots;
-    /// Their hashes (coupling::file_hash), as a checkpoint lists them.
-    std::vector<std::string> snapshot_hashes;
-    /// Rows of timing.csv (not in checkpoints).
-    std::vector<std::vector<double>> timing;
-    /// F at the end of loading (unloading starts from it).
-    Eigen::Matrix3d loaded_deformation = Eigen::Matrix3d::Identity();
-  };
-
-  /// Timings of one run [s].
-  struct RveTimings
-  {
-    double steps         = 0.0;
-    int    n_steps       = 0;
-    double tangents      = 0.0; ///< condensed + affine, current branch
-    int    n_tangents    = 0;
-    double fd_tangents   = 0.0;
-    int    n_fd_tangents = 0;
-    double total         = 0.0;
-  };
-
   struct RveOutcome
   {
     /// An ExitCode: success, or not_converged (last good state kept).
-    int         code    = 0;
-    bool        stopped = false;
-    RveProgress progress;
-    RveTimings  timings;
+    int  code    = 0;
+    bool stopped = false;
+    /// Timings of the path; total: of the run with its output [s].
+    dem::RvePathTimings timings;
   };
 
   /**
-   * Drives a cell along the study's strain path, writing rve.csv,
-   * moduli.csv, stress_strain.png, moduli.png, snapshots/ with
-   * snapshots.pvd, and checkpoints/rve.h5 into `folder`. `resumed`, if
+   * The files of one path in `folder`: rve.csv, moduli.csv, timing.csv,
+   * stress_strain.png, moduli.png, snapshots/ with snapshots.pvd,
+   * checkpoints/rve.h5, and last_converged.h5 if a step failed; progress
+   * on screen. observer() writes snapshots and checkpoints as the path
+   * goes, finish() the rest.
+   */
+  class RvePathOutput
+  {
+  public:
+    /// `resumed`, if given, is the progress read from a checkpoint: its
+    /// rows come first, its snapshots are taken over.
+    RvePathOutput(const RveStudy       &study,
+                  std::filesystem::path folder,
+                  const RveProgress    *resumed = nullptr);
+
+    dem::RvePathObserver
+    observer();
+
+    RveOutcome
+    finish(const dem::RvePathResult &result, const dem::RvePathStudy &path);
+
+  private:
+    /// The earlier rows and this run's, as a checkpoint stores them.
+    RveProgress
+    progress(const dem::RvePathResult &result,
+             const dem::RvePathState  &state) const;
+
+    void
+    snapshot(int step, const dem::PeriodicBed &bed);
+
+    void
+    write_snapshot_list() const;
+
+    void
+    report(const dem::RvePathStepEvent &e) const;
+
+    const RveStudy                       &study;
+    std::filesystem::path                 folder;
+    RveProgress                           earlier;
+    std::vector<int>                      snapshots;
+    std::chrono::steady_clock::time_point started;
+  };
+
+  /**
+   * Drives a cell along the study's strain path (dem::RvePathStudy),
+   * writing the files of RvePathOutput into `folder`. `resumed`, if
    * given, is the progress read from a checkpoint together with `bed`.
    */
   RveOutcome
@@ -78,19 +74,4 @@ namespace compax::cli
                dem::PeriodicBed             bed,
                const std::filesystem::path &folder,
                const RveProgress           *resumed = nullptr);
-
-  /// Writes a checkpoint (cell and progress) atomically.
-  void
-  write_rve_checkpoint(const std::filesystem::path &file,
-                       const RveStudy              &study,
-                       const dem::PeriodicBed      &bed,
-                       const RveProgress           &progress);
-
-  /// Reads a checkpoint and checks that the earlier snapshots are next to
-  /// it; throws InputError naming Checkpoints/Resume from if it is not an
-  /// intact RVE checkpoint written with the study's resume_parameters.
-  RveProgress
-  read_rve_checkpoint(const std::string &file,
-                      const RveStudy    &study,
-                      dem::PeriodicBed  &bed);
 } // namespace compax::cli

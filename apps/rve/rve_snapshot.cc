@@ -28,4 +28,10 @@ namespace compax::cli
       bed.cell.wrap(x);
     snapshot.write(file);
   }
+
+  std::string
+  snapshot_name(const int step)
+  {
+    return "snapshots/rve-" + std::to_string(step) + ".vtu";
+  }
 } // namespace compax::cli

@@ -3,6 +3,7 @@
 #include "dem/rve/periodic_bed.h"
 
 #include <filesystem>
+#include <string>
 
 namespace compax::cli
 {
@@ -17,4 +18,9 @@ namespace compax::cli
    */
   void
   write_rve_vtu(const std::filesystem::path &file, const dem::PeriodicBed &bed);
+
+  /// The snapshot of a step, relative to the run folder (checkpoints list
+  /// snapshots by step).
+  std::string
+  snapshot_name(int step);
 } // namespace compax::cli

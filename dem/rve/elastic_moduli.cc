@@ -1,9 +1,9 @@
-#include "coupling/elastic_moduli.h"
+#include "dem/rve/elastic_moduli.h"
 
 #include <cmath>
 #include <stdexcept>
 
-namespace compax::coupling
+namespace compax::dem
 {
   IsotropicModuli
   IsotropicModuli::from_bulk_shear(const double K, const double G)
@@ -111,4 +111,4 @@ namespace compax::coupling
     m.shear_axial            = 1.0 / S(3, 3);
     return m;
   }
-} // namespace compax::coupling
+} // namespace compax::dem

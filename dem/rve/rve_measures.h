@@ -4,7 +4,7 @@
 
 #include <cstddef>
 
-namespace compax::cli
+namespace compax::dem
 {
   /// Microstructure measures of an equilibrated periodic cell.
   struct RveMeasures
@@ -27,5 +27,5 @@ namespace compax::cli
   };
 
   RveMeasures
-  measure_rve(const dem::PeriodicBed &bed);
-} // namespace compax::cli
+  measure_rve(const PeriodicBed &bed);
+} // namespace compax::dem

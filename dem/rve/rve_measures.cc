@@ -1,13 +1,13 @@
-#include "apps/rve/rve_measures.h"
+#include "dem/rve/rve_measures.h"
 
 #include "dem/rve/periodic_assembler.h"
 
 #include <vector>
 
-namespace compax::cli
+namespace compax::dem
 {
   RveMeasures
-  measure_rve(const dem::PeriodicBed &bed)
+  measure_rve(const PeriodicBed &bed)
   {
     RveMeasures                                          m;
     const auto                                          &p = bed.particles;
@@ -15,18 +15,15 @@ namespace compax::cli
     std::vector<unsigned>                                loaded(n, 0);
     std::vector<std::pair<std::uint32_t, std::uint32_t>> network;
     double                                               ap2 = 0.0, r2 = 0.0;
-    for (const dem::PeriodicContact &c : bed.contacts.pairs)
+    for (const PeriodicContact &c : bed.contacts.pairs)
       {
         ap2 += c.history.a_p * c.history.a_p;
         m.n_bonds += c.history.a_B > 0.0;
-        const double gamma = p.radii[c.i] + p.radii[c.j]
-                             - dem::branch_vector(p, bed.cell, c).norm();
+        const double gamma
+          = p.radii[c.i] + p.radii[c.j] - branch_vector(p, bed.cell, c).norm();
         if (c.history.a_p == 0.0 && gamma <= 0.0)
           continue;
-        if (dem::periodic_contact_response(c,
-                                           gamma,
-                                           dem::ContactBranch::current)
-              .force
+        if (periodic_contact_response(c, gamma, ContactBranch::current).force
             == 0.0)
           continue;
         network.emplace_back(c.i, c.j);
@@ -67,4 +64,4 @@ namespace compax::cli
     m.coordination_without_rattlers = kept ? 2.0 * backbone / kept : 0.0;
     return m;
   }
-} // namespace compax::cli
+} // namespace compax::dem
