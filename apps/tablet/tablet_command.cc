@@ -1,7 +1,7 @@
 #include "apps/tablet/tablet_command.h"
 
 #include "apps/tablet/multiscale_material.h"
-#include "apps/tablet/tablet_checkpoint.h"
+#include "coupling/tablet_checkpoint.h"
 
 #include "apps/cli/archive_entry.h"
 #include "apps/cli/input_error.h"
@@ -410,7 +410,7 @@ namespace compax::cli
      * number of MPI ranks it must have been written by, if known); throws
      * InputError naming the entry.
      */
-    TabletCheckpoint
+    coupling::TabletCheckpoint
     read_resume_checkpoint(const TabletSetup                &s,
                            const std::optional<unsigned int> ranks)
     {
@@ -430,9 +430,9 @@ namespace compax::cli
                      "> 0)");
       return read_archive_entry(
         entry, s.resume_from, coupling::archive_kind::tablet, [&] {
-          return read_tablet_checkpoint(old / "checkpoint",
-                                        s.resume_parameters,
-                                        ranks);
+          return coupling::read_tablet_checkpoint(old / "checkpoint",
+                                                  s.resume_parameters,
+                                                  ranks);
         });
     }
 
@@ -825,7 +825,7 @@ namespace compax::cli
         MPI_Barrier(comm);
         if (root)
           {
-            TabletCheckpoint c;
+            coupling::TabletCheckpoint c;
             c.steps = history;
             std::ostringstream fields;
             fields << std::setprecision(17);
@@ -836,11 +836,11 @@ namespace compax::cli
             boost::archive::text_oarchive archive(entries);
             archive << xdmf;
             c.xdmf = entries.str();
-            write_tablet_checkpoint(fresh,
-                                    setup.resume_parameters,
-                                    dealii::Utilities::MPI::n_mpi_processes(
-                                      comm),
-                                    c);
+            coupling::write_tablet_checkpoint(
+              fresh,
+              setup.resume_parameters,
+              dealii::Utilities::MPI::n_mpi_processes(comm),
+              c);
           }
         MPI_Barrier(comm);
         if (root)
@@ -857,7 +857,7 @@ namespace compax::cli
           const fs::path               old = fs::path(setup.resume_from);
           std::vector<fem::TabletStep> done;
           std::string                  error;
-          TabletCheckpoint             saved;
+          coupling::TabletCheckpoint   saved;
           if (root)
             {
               try

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace compax::cli
+namespace compax::coupling
 {
   /**
    * What a `compax tablet` checkpoint holds besides the solver state of
@@ -37,7 +37,7 @@ namespace compax::cli
 
   /**
    * Reads @p folder/tablet.h5 and checks every file it lists; throws
-   * coupling::Hdf5ArchiveError or std::runtime_error with a one-line
+   * Hdf5ArchiveError or std::runtime_error with a one-line
    * reason. @p ranks, if given, must be the number of MPI ranks it was
    * written with.
    */
@@ -45,4 +45,4 @@ namespace compax::cli
   read_tablet_checkpoint(const std::filesystem::path &folder,
                          const std::string           &parameters,
                          std::optional<unsigned int>  ranks);
-} // namespace compax::cli
+} // namespace compax::coupling
