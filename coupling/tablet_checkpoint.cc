@@ -149,4 +149,37 @@ namespace compax::coupling
       }
     return c;
   }
+
+  TabletCheckpoint
+  read_tablet_resume(const std::filesystem::path      &run_folder,
+                     const std::string                &parameters,
+                     const std::optional<unsigned int> ranks)
+  {
+    namespace fs = std::filesystem;
+    if (!fs::is_directory(run_folder))
+      throw TabletResumeError(fs::exists(run_folder)
+                                ? "is not a folder (give the output folder "
+                                  "of the earlier run)"
+                                : "no such folder");
+    if (!fs::is_directory(run_folder / "checkpoint"))
+      throw TabletResumeError(
+        "has no checkpoint folder (run with Checkpoint interval > 0)");
+    try
+      {
+        return read_tablet_checkpoint(run_folder / "checkpoint",
+                                      parameters,
+                                      ranks);
+      }
+    catch (const Hdf5ArchiveError &e)
+      {
+        throw TabletResumeError(e.reason());
+      }
+    catch (const std::exception &e)
+      {
+        // Content that does not fit together.
+        throw TabletResumeError("a damaged "
+                                + describe_archive_kind(archive_kind::tablet)
+                                + " (" + e.what() + ")");
+      }
+  }
 } // namespace compax::coupling

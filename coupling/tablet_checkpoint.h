@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -45,4 +46,23 @@ namespace compax::coupling
   read_tablet_checkpoint(const std::filesystem::path &folder,
                          const std::string           &parameters,
                          std::optional<unsigned int>  ranks);
+
+  /// Why a run folder's checkpoint cannot be resumed, as one line (a
+  /// program names its input with it; `compax tablet` gives it as bad
+  /// input of Output/Resume from).
+  class TabletResumeError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /**
+   * The checkpoint of the run folder @p run_folder (its checkpoint/
+   * folder), read and checked as read_tablet_checkpoint() does; throws
+   * TabletResumeError with the reason whatever is wrong.
+   */
+  TabletCheckpoint
+  read_tablet_resume(const std::filesystem::path &run_folder,
+                     const std::string           &parameters,
+                     std::optional<unsigned int>  ranks);
 } // namespace compax::coupling
