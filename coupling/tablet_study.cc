@@ -108,6 +108,8 @@ namespace compax::coupling
             || !this->options.resume_from.empty()))
       throw std::invalid_argument(
         "a tablet study without output folder cannot checkpoint or resume");
+    if (this->options.field_interval == 0)
+      throw std::invalid_argument("tablet study: field interval 0");
   }
 
   template <int dim>

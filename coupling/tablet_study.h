@@ -27,7 +27,7 @@ namespace compax::coupling
     bool write_fields = true;
     /// With write_fields: also tablet_NNNN.h5 listed by tablet.xdmf.
     bool write_hdf5 = true;
-    /// Fields every this many steps (and at the end of every stage).
+    /// Fields every this many steps (> 0; and at the end of every stage).
     unsigned int field_interval = 20;
     /// A checkpoint (folder/checkpoint) every this many steps and when a
     /// step does not converge; 0: none.
