@@ -1,35 +1,23 @@
 #include "apps/tablet/tablet_command.h"
 
 #include "apps/tablet/multiscale_material.h"
-#include "apps/tablet/tablet_checkpoint.h"
 
-#include "apps/cli/archive_entry.h"
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
-#include "apps/common/csv_writer.h"
-#include "apps/common/gnuplot.h"
-#include "coupling/hdf5_archive.h"
-#include "coupling/rve_material.h"
+#include "apps/tablet/tablet_report.h"
+#include "coupling/tablet_checkpoint.h"
+#include "coupling/tablet_study.h"
 #include "fem/drucker_prager_cap.h"
 #include "fem/linear_elastic_material.h"
 #include "fem/tablet_process.h"
 
-#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/tria.h>
 
-#include <boost/archive/text_iarchive.hpp>
-#include <boost/archive/text_oarchive.hpp>
-#include <boost/serialization/vector.hpp>
-
 #include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -52,14 +40,10 @@ namespace compax::cli
       fem::TabletSolverSettings                 solver;
       fem::TabletProcess                        process;
       std::shared_ptr<const fem::MaterialModel> material;
-      unsigned int                              output_interval     = 10;
-      bool                                      write_fields        = true;
-      bool                                      write_hdf5          = true;
-      unsigned int                              checkpoint_interval = 25;
-      std::string                               resume_from;
-      /// The canonical text of the entries a checkpoint must have been
-      /// written with to be resumed.
-      std::string resume_parameters;
+      /// Output, checkpoints and resume (the folder is set in run());
+      /// parameters: the canonical text of the entries a checkpoint must
+      /// have been written with to be resumed.
+      coupling::TabletStudyOptions output;
       /// multiscale-database or multiscale-fe2 (the material is built in
       /// run(), not at --check); empty otherwise.
       std::string multiscale_model;
@@ -405,35 +389,13 @@ namespace compax::cli
       reject_entry("Geometry/Mesh file", entry, where);
     }
 
-    /**
-     * The checkpoint of Output/Resume from, read and checked (with the
-     * number of MPI ranks it must have been written by, if known); throws
-     * InputError naming the entry.
-     */
-    TabletCheckpoint
-    read_resume_checkpoint(const TabletSetup                &s,
-                           const std::optional<unsigned int> ranks)
+    /// Bad input of Output/Resume from, for the reason @p e gives.
+    [[noreturn]] void
+    reject_resume(const TabletSetup &s, const coupling::TabletResumeError &e)
     {
-      const std::string           entry = "Output/Resume from";
-      const std::filesystem::path old(s.resume_from);
-      if (!std::filesystem::is_directory(old))
-        reject_entry(entry,
-                     s.resume_from,
-                     std::filesystem::exists(old)
-                       ? "is not a folder (give the output folder of the "
-                         "earlier run)"
-                       : "no such folder");
-      if (!std::filesystem::is_directory(old / "checkpoint"))
-        reject_entry(entry,
-                     s.resume_from,
-                     "has no checkpoint folder (run with Checkpoint interval "
-                     "> 0)");
-      return read_archive_entry(
-        entry, s.resume_from, coupling::archive_kind::tablet, [&] {
-          return read_tablet_checkpoint(old / "checkpoint",
-                                        s.resume_parameters,
-                                        ranks);
-        });
+      reject_entry("Output/Resume from",
+                   s.output.resume_from.string(),
+                   e.what());
     }
 
     TabletSetup
@@ -595,11 +557,11 @@ namespace compax::cli
       prm.leave_subsection();
 
       prm.enter_subsection("Output");
-      s.output_interval     = prm.get_integer("Field interval");
-      s.write_fields        = prm.get_bool("Write fields");
-      s.write_hdf5          = prm.get_bool("Write HDF5");
-      s.checkpoint_interval = prm.get_integer("Checkpoint interval");
-      s.resume_from         = prm.get("Resume from");
+      s.output.field_interval      = prm.get_integer("Field interval");
+      s.output.write_fields        = prm.get_bool("Write fields");
+      s.output.write_hdf5          = prm.get_bool("Write HDF5");
+      s.output.checkpoint_interval = prm.get_integer("Checkpoint interval");
+      s.output.resume_from         = prm.get("Resume from");
       prm.leave_subsection();
 
       if (s.process.ejection_steps > 0 && s.process.unloading_steps == 0)
@@ -616,7 +578,7 @@ namespace compax::cli
       // resumes from, how often it checkpoints, how hard the solver tries
       // (a run that stopped without convergence is resumed with more
       // iterations or cuts) and how much it prints; files by their content.
-      s.resume_parameters
+      s.output.parameters
         = canonical_parameters(prm,
                                {},
                                {"Output/Resume from",
@@ -626,56 +588,20 @@ namespace compax::cli
                                 "Solver/Linear solver",
                                 "Solver/Print Newton residuals"},
                                {"Geometry/Mesh file", "Material/DPC table"});
-      if (!s.resume_from.empty())
-        read_resume_checkpoint(s, std::nullopt);
+      // A checkpoint that cannot be resumed is refused before any output
+      // exists (the ranks are checked when it runs).
+      if (!s.output.resume_from.empty())
+        try
+          {
+            coupling::read_tablet_resume(s.output.resume_from,
+                                         s.output.parameters,
+                                         std::nullopt);
+          }
+        catch (const coupling::TabletResumeError &e)
+          {
+            reject_resume(s, e);
+          }
       return s;
-    }
-
-    /// Extremes of the cycle, printed at the end.
-    struct Summary
-    {
-      double max_upper_pressure  = 0.0;
-      double density_at_max      = 0.0;
-      double density_unloaded    = 0.0;
-      double residual_wall       = 0.0;
-      double density_out_of_die  = 0.0;
-      double peak_ejection_force = 0.0;
-      /// tr(sigma) / 3 averaged over the tablet at the end of ejection [Pa].
-      double mean_stress_out_of_die = 0.0;
-      bool   ejected                = false;
-    };
-
-    /// For an FE2 run, the time its RVEs took (summed and slowest rank)
-    /// against the run's wall time since @p start, as a summary line; empty
-    /// for other materials. Collective.
-    std::string
-    rve_time_share(const fem::MaterialModel                    &material,
-                   const std::chrono::steady_clock::time_point &start,
-                   MPI_Comm                                     comm)
-    {
-      const auto *fe2 = dynamic_cast<const coupling::RveMaterial *>(&material);
-      if (fe2 == nullptr)
-        return {};
-      const coupling::RveMaterialCounters &c    = fe2->counters_so_far();
-      const double                         wall = std::chrono::duration<double>(
-                            std::chrono::steady_clock::now() - start)
-                            .count();
-      const double slowest = dealii::Utilities::MPI::max(c.seconds, comm);
-      const double total   = dealii::Utilities::MPI::sum(c.seconds, comm);
-      const auto   count   = [&](const std::size_t n) {
-        return static_cast<unsigned long long>(
-          dealii::Utilities::MPI::sum(static_cast<double>(n), comm));
-      };
-      std::ostringstream out;
-      out << std::setprecision(4) << "RVE solves: " << count(c.solves) << " ("
-          << count(c.continuations) << " by continuation, " << count(c.failures)
-          << " failed), " << total << " s on all ranks, " << slowest
-          << " s on the busiest rank, of " << wall << " s wall ("
-          << 100.0 * slowest / std::max(wall, 1e-300)
-          << " %; the rest is the FEM: assembly, linear solves, output); "
-          << "pool consolidated at start-up in "
-          << dealii::Utilities::MPI::max(c.pool_seconds, comm) << " s\n";
-      return out.str();
     }
 
     template <int dim>
@@ -684,398 +610,40 @@ namespace compax::cli
               const std::filesystem::path &folder,
               MPI_Comm                     comm)
     {
-      namespace fs    = std::filesystem;
       const bool root = dealii::Utilities::MPI::this_mpi_process(comm) == 0;
-      fem::TabletSolver<dim> solver(setup.solver, setup.material, comm);
-      const double           area = solver.punch_area();
+      coupling::TabletStudyOptions options = setup.output;
+      options.folder                       = folder;
+      coupling::TabletStudy<dim> study(
+        setup.solver, setup.process, setup.material, options, comm);
       if (root)
-        std::cout << "compax tablet: "
-                  << (dim == 2 ? "axisymmetric" : "3-D quarter") << " model, "
-                  << solver.n_cells() << " cells, " << solver.n_dofs()
-                  << " unknowns, "
-                  << dealii::Utilities::MPI::n_mpi_processes(comm)
-                  << " MPI rank(s), material " << setup.material->name()
-                  << '\n';
-      const double initial_volume = solver.volume(); // collective
-      if (root)
-        {
-          const auto &g = solver.geometry();
-          std::cout << "  die diameter " << g.die_diameter * 1e3
-                    << " mm, fill height " << g.fill_height * 1e3 << " mm";
-          if (!g.upper_punch.is_flat())
-            std::cout << " at the die wall, concave upper punch (cup depth "
-                      << g.upper_punch.cup_depth * 1e3
-                      << " mm, radius of curvature "
-                      << g.upper_punch.cup_radius * 1e3 << " mm)";
-          if (!g.mesh_file.empty())
-            std::cout << ", mesh " << g.mesh_file;
-          std::cout << ", initial volume " << initial_volume * 1e9 << " mm^3\n";
-        }
-
-      std::optional<CsvWriter> csv;
-      if (root)
-        csv.emplace(folder / "tablet.csv",
-                    std::vector<std::string>{"step",
-                                             "time",
-                                             "stage",
-                                             "upper_punch_displacement",
-                                             "lower_punch_displacement",
-                                             "upper_punch_pressure",
-                                             "lower_punch_pressure",
-                                             "die_wall_pressure",
-                                             "ejection_force",
-                                             "mean_relative_density",
-                                             "upper_punch_force",
-                                             "lower_punch_force",
-                                             "die_wall_normal_force",
-                                             "die_wall_friction_force",
-                                             "die_wall_contact_area",
-                                             "sliding_fraction",
-                                             "newton_iterations",
-                                             "mean_stress"});
-      std::vector<std::pair<double, std::string>> pvd;
-      std::vector<fem::TabletStep>                history;
-      Summary                                     summary;
-      const unsigned int n_steps      = fem::n_steps(setup.process);
-      fem::TabletStage   previous     = fem::TabletStage::compaction;
-      unsigned int       last_written = 0;
-      fem::TabletStep    last;
-
-      auto write_pvd = [&]() {
+        print_tablet_header(study,
+                            *setup.material,
+                            dealii::Utilities::MPI::n_mpi_processes(comm));
+      study.on_resume = [&](const fem::TabletStep &last) {
         if (root)
-          {
-            std::ofstream out(folder / "tablet.pvd");
-            dealii::DataOutBase::write_pvd_record(out, pvd);
-          }
+          std::cout << "Resuming after step " << last.index << " from "
+                    << setup.output.resume_from.string() << '\n';
       };
-      std::vector<dealii::XDMFEntry> xdmf;
-      auto write_fields = [&](const fem::TabletStep &st) {
-        if (!setup.write_fields)
-          return;
-        const fem::FieldFiles files = solver.write_fields(
-          folder, st.index, st.time, true, setup.write_hdf5);
-        pvd.emplace_back(st.time, files.vtu_record);
-        if (setup.write_hdf5)
-          {
-            xdmf.push_back(files.xdmf);
-            fem::write_xdmf_record<dim>(xdmf, folder / "tablet.xdmf", comm);
-          }
-        last_written = st.index;
-        write_pvd();
+      study.on_step = [&](const coupling::TabletProgress &p) {
+        if (root)
+          print_tablet_step(p);
       };
-
-      // Summary and CSV row of one step (also for the replayed steps of a
-      // resumed run).
-      auto record = [&](const fem::TabletStep &st) {
-        history.push_back(st);
-        const auto  &f = st.forces;
-        const double wall_pressure
-          = f.die_wall_contact_area > 0.0
-              ? f.die_wall_normal_force / f.die_wall_contact_area
-              : 0.0;
-        const double ejection_force
-          = st.stage == fem::TabletStage::ejection ? f.lower_punch_force : 0.0;
-        if (st.stage == fem::TabletStage::compaction
-            && f.upper_punch_force / area >= summary.max_upper_pressure)
+      const coupling::TabletStudyResult result = [&] {
+        try
           {
-            summary.max_upper_pressure = f.upper_punch_force / area;
-            summary.density_at_max     = st.mean_relative_density;
+            return study.run();
           }
-        if (st.stage == fem::TabletStage::unloading)
+        catch (const coupling::TabletResumeError &e)
           {
-            summary.density_unloaded = st.mean_relative_density;
-            summary.residual_wall    = wall_pressure;
+            reject_resume(setup, e);
           }
-        if (st.stage == fem::TabletStage::ejection)
-          {
-            summary.peak_ejection_force
-              = std::max(summary.peak_ejection_force, ejection_force);
-            summary.density_out_of_die     = st.mean_relative_density;
-            summary.mean_stress_out_of_die = st.mean_stress;
-            summary.ejected                = f.die_wall_normal_force == 0.0;
-          }
-        if (root)
-          {
-            *csv << static_cast<long long>(st.index) << st.time
-                 << fem::stage_name(st.stage) << st.upper_punch_displacement
-                 << st.lower_punch_displacement << f.upper_punch_force / area
-                 << f.lower_punch_force / area << wall_pressure
-                 << ejection_force << st.mean_relative_density
-                 << f.upper_punch_force << f.lower_punch_force
-                 << f.die_wall_normal_force << f.die_wall_friction_force
-                 << f.die_wall_contact_area << f.sliding_fraction
-                 << static_cast<long long>(st.newton_iterations)
-                 << st.mean_stress;
-            csv->end_row();
-          }
-        return wall_pressure;
-      };
-
-      // Checkpoint: solver state of every rank, the steps so far and the
-      // field list, written beside the old one and swapped in.
-      auto checkpoint = [&]() {
-        const fs::path fresh = folder / "checkpoint.new";
-        if (root)
-          {
-            fs::remove_all(fresh);
-            fs::create_directories(fresh);
-          }
-        MPI_Barrier(comm);
-        solver.save_state(fresh);
-        MPI_Barrier(comm);
-        if (root)
-          {
-            TabletCheckpoint c;
-            c.steps = history;
-            std::ostringstream fields;
-            fields << std::setprecision(17);
-            for (const auto &[time, name] : pvd)
-              fields << time << ' ' << name << '\n';
-            c.fields = fields.str();
-            std::ostringstream            entries;
-            boost::archive::text_oarchive archive(entries);
-            archive << xdmf;
-            c.xdmf = entries.str();
-            write_tablet_checkpoint(fresh,
-                                    setup.resume_parameters,
-                                    dealii::Utilities::MPI::n_mpi_processes(
-                                      comm),
-                                    c);
-          }
-        MPI_Barrier(comm);
-        if (root)
-          {
-            fs::remove_all(folder / "checkpoint");
-            fs::rename(fresh, folder / "checkpoint");
-          }
-        MPI_Barrier(comm);
-      };
-
-      unsigned int resume_after = 0;
-      if (!setup.resume_from.empty())
-        {
-          const fs::path               old = fs::path(setup.resume_from);
-          std::vector<fem::TabletStep> done;
-          std::string                  error;
-          TabletCheckpoint             saved;
-          if (root)
-            {
-              try
-                {
-                  saved = read_resume_checkpoint(
-                    setup, dealii::Utilities::MPI::n_mpi_processes(comm));
-                  done = saved.steps;
-                  if (done.size() > n_steps + 1)
-                    reject_entry("Output/Resume from",
-                                 setup.resume_from,
-                                 "its checkpoint has more steps than this "
-                                 "cycle");
-                }
-              catch (const InputError &e)
-                {
-                  error = e.what();
-                }
-            }
-          error = dealii::Utilities::MPI::broadcast(comm, error, 0);
-          if (!error.empty())
-            throw InputError(error);
-          try
-            {
-              solver.load_state(old / "checkpoint");
-              error.clear();
-            }
-          catch (const std::exception &e)
-            {
-              error = e.what();
-            }
-          // Every rank must agree (a rank that failed would leave the others
-          // waiting).
-          {
-            std::string all = error;
-            for (unsigned int r = 0;
-                 r < dealii::Utilities::MPI::n_mpi_processes(comm);
-                 ++r)
-              {
-                const std::string e
-                  = dealii::Utilities::MPI::broadcast(comm, error, r);
-                if (all.empty() && !e.empty())
-                  all = e;
-              }
-            if (!all.empty())
-              reject_entry("Output/Resume from", setup.resume_from, all);
-          }
-          // A checkpoint of the initial state only: start afresh.
-          if (done.size() == 1)
-            done.clear();
-          unsigned int written = 0;
-          if (root && !done.empty())
-            {
-              std::istringstream fields(saved.fields);
-              double             time;
-              std::string        name;
-              while (fields >> time >> name)
-                {
-                  pvd.emplace_back(time, name);
-                  // tablet_NNNN.pvtu and its pieces tablet_NNNN.<rank>.vtu
-                  const std::string stem = name.substr(0, name.find('.'));
-                  written    = std::stoul(stem.substr(stem.find('_') + 1));
-                  bool found = false;
-                  for (const auto &e : fs::directory_iterator(old))
-                    if (e.path().filename().string().rfind(stem + ".", 0) == 0)
-                      {
-                        fs::copy_file(e.path(),
-                                      folder / e.path().filename(),
-                                      fs::copy_options::overwrite_existing);
-                        found = true;
-                      }
-                  if (!found)
-                    error = "the field output " + name
-                            + " of its checkpoint is missing in it";
-                }
-              write_pvd();
-              if (setup.write_hdf5 && !saved.xdmf.empty())
-                {
-                  std::istringstream            entries(saved.xdmf);
-                  boost::archive::text_iarchive archive(entries);
-                  archive >> xdmf;
-                  fem::write_xdmf_record<dim>(xdmf,
-                                              folder / "tablet.xdmf",
-                                              MPI_COMM_SELF);
-                }
-              std::cout << "Resuming after step " << done.back().index
-                        << " from " << setup.resume_from << '\n';
-            }
-          error = dealii::Utilities::MPI::broadcast(comm, error, 0);
-          if (!error.empty())
-            reject_entry("Output/Resume from", setup.resume_from, error);
-          // Every rank replays the steps: the field output decisions that
-          // follow are collective.
-          std::uint64_t n_done = done.size();
-          MPI_Bcast(&n_done, 1, MPI_UINT64_T, 0, comm);
-          done.resize(n_done);
-          MPI_Bcast(done.data(),
-                    static_cast<int>(n_done * sizeof(fem::TabletStep)),
-                    MPI_BYTE,
-                    0,
-                    comm);
-          last_written = dealii::Utilities::MPI::broadcast(comm, written, 0);
-          for (const auto &st : done)
-            record(st);
-          if (!history.empty())
-            {
-              last     = history.back();
-              previous = last.stage;
-            }
-          resume_after = dealii::Utilities::MPI::broadcast(comm, last.index, 0);
-        }
-
-      const auto start   = std::chrono::steady_clock::now();
-      auto       on_step = [&](const fem::TabletStep &st) {
-        // Fields at the end of each stage (the step before a new one) and
-        // every output interval.
-        if (st.stage != previous && last.index != last_written)
-          write_fields(last);
-        previous                   = st.stage;
-        last                       = st;
-        const double wall_pressure = record(st);
-        if (root)
-          {
-            const auto  &f       = st.forces;
-            const double elapsed = std::chrono::duration<double>(
-                                     std::chrono::steady_clock::now() - start)
-                                     .count();
-            const unsigned int done_here = st.index - resume_after;
-            const double       left      = done_here > 0
-                                                   ? elapsed * (n_steps - st.index) / done_here
-                                                   : 0.0;
-            std::printf("step %4u/%u %-10s rho %.4f  upper %8.2f MPa  wall "
-                              "%7.2f MPa  lower %9.2f N  Newton %2u  %.1f s, ~%.0f "
-                              "s left\n",
-                        st.index,
-                        n_steps,
-                        fem::stage_name(st.stage).c_str(),
-                        st.mean_relative_density,
-                        f.upper_punch_force / area * 1e-6,
-                        wall_pressure * 1e-6,
-                        f.lower_punch_force,
-                        st.newton_iterations,
-                        elapsed,
-                        left);
-            std::fflush(stdout);
-          }
-        if (st.index % setup.output_interval == 0)
-          write_fields(st);
-        if (setup.checkpoint_interval > 0 && st.index > 0
-            && st.index % setup.checkpoint_interval == 0)
-          checkpoint();
-      };
-
-      const bool converged = fem::run_tablet_process<dim>(solver,
-                                                          setup.process,
-                                                          on_step,
-                                                          resume_after);
-      if (last.index != last_written)
-        write_fields(last);
-      if (!converged && setup.checkpoint_interval > 0)
-        checkpoint();
-      const std::string rve_share
-        = rve_time_share(*setup.material, start, comm);
-      // The FE2 floor's share of the final mean stress (the rest is the
-      // RVEs'), collective.
-      const auto *fe2
-        = dynamic_cast<const coupling::RveMaterial *>(setup.material.get());
-      const double floor_mean_stress
-        = fe2 == nullptr ? 0.0
-                         : dealii::trace(solver.volume_average(
-                             [](dealii::ArrayView<const double> h) {
-                               return coupling::RveMaterial::floor_stress(h);
-                             }))
-                             / 3.0;
+      }();
       if (root)
         {
-          std::cout << rve_share;
-          csv->close();
-          std::cout << "Tablet cycle " << (converged ? "completed" : "STOPPED")
-                    << ":\n  max upper punch pressure     "
-                    << summary.max_upper_pressure * 1e-6
-                    << " MPa\n  rel. density at max pressure "
-                    << summary.density_at_max << " (in die)\n";
-          if (setup.process.unloading_steps > 0)
-            std::cout << "  rel. density after unloading "
-                      << summary.density_unloaded
-                      << " (in die)\n  residual die-wall pressure   "
-                      << summary.residual_wall * 1e-6 << " MPa\n";
-          if (setup.process.ejection_steps > 0)
-            std::cout << "  peak ejection force          "
-                      << summary.peak_ejection_force
-                      << " N\n  rel. density out of die      "
-                      << summary.density_out_of_die
-                      << (summary.ejected ? "" : " (tablet still in the die)")
-                      << "\n  mean stress out of die       "
-                      << summary.mean_stress_out_of_die * 1e-6
-                      << " MPa (tr sigma / 3 over the tablet, tension > 0)\n";
-          if (fe2 != nullptr)
-            std::cout << "  FE2 floor's mean stress      "
-                      << floor_mean_stress * 1e-6
-                      << " MPa (the RVEs carry the rest)\n";
-          render_png(folder,
-                     "tablet.gp",
-                     "set datafile separator ','\n"
-                     "set key autotitle columnhead\n"
-                     "set multiplot layout 2,1\n"
-                     "set xlabel 'time [s]'\n"
-                     "set ylabel 'pressure [MPa]'\n"
-                     "plot 'tablet.csv' using 2:($6/1e6) with lines lw 2 "
-                     "title 'upper punch', '' using 2:($7/1e6) with lines lw "
-                     "2 title 'lower punch', '' using 2:($8/1e6) with lines "
-                     "lw 2 title 'die wall'\n"
-                     "set ylabel 'ejection force [N]'\n"
-                     "plot 'tablet.csv' using 2:9 with lines lw 2 title "
-                     "'ejection force'\n"
-                     "unset multiplot\n",
-                     "tablet.png");
+          print_tablet_summary(result, setup.process);
+          plot_tablet(folder);
         }
-      return converged ? success : not_converged;
+      return result.converged ? success : not_converged;
     }
 
     class TabletCommand : public Command

@@ -4,6 +4,7 @@
 // (the built-in DPC table) in a 10 mm die.
 
 #include "fem/drucker_prager_cap.h"
+#include "fem/tablet_process.h"
 #include "fem/tablet_solver.h"
 
 #include <memory>
@@ -30,5 +31,17 @@ namespace compax::testing
   {
     return std::make_shared<fem::DruckerPragerCap>(
       fem::DpcTable::microcrystalline_cellulose());
+  }
+
+  /// A short cycle: 20 compaction, 5 unloading and 6 ejection steps (2 mm).
+  inline fem::TabletProcess
+  mcc_short_cycle()
+  {
+    fem::TabletProcess p;
+    p.compaction_steps      = 20;
+    p.unloading_steps       = 5;
+    p.ejection_displacement = 2e-3;
+    p.ejection_steps        = 6;
+    return p;
   }
 } // namespace compax::testing

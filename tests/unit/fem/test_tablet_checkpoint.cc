@@ -15,21 +15,8 @@
 
 namespace fem = compax::fem;
 using compax::testing::mcc_material;
+using compax::testing::mcc_short_cycle;
 using compax::testing::mcc_tablet_settings;
-
-namespace
-{
-  fem::TabletProcess
-  process()
-  {
-    fem::TabletProcess p;
-    p.compaction_steps      = 20;
-    p.unloading_steps       = 5;
-    p.ejection_displacement = 2e-3;
-    p.ejection_steps        = 6;
-    return p;
-  }
-} // namespace
 
 TEST(TabletCheckpoint, ResumedCycleEndsInTheUninterruptedState)
 {
@@ -44,7 +31,7 @@ TEST(TabletCheckpoint, ResumedCycleEndsInTheUninterruptedState)
                                 mcc_material(),
                                 MPI_COMM_SELF);
     ASSERT_TRUE(fem::run_tablet_process<2>(
-      solver, process(), [&](const fem::TabletStep &st) {
+      solver, mcc_short_cycle(), [&](const fem::TabletStep &st) {
         full.push_back(st);
         if (st.index == 22) // in the unloading stage
           solver.save_state(folder);
@@ -58,7 +45,7 @@ TEST(TabletCheckpoint, ResumedCycleEndsInTheUninterruptedState)
     solver.load_state(folder);
     ASSERT_TRUE(fem::run_tablet_process<2>(
       solver,
-      process(),
+      mcc_short_cycle(),
       [&](const fem::TabletStep &st) { resumed.push_back(st); },
       22));
   }

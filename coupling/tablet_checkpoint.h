@@ -4,10 +4,11 @@
 
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
-namespace compax::cli
+namespace compax::coupling
 {
   /**
    * What a `compax tablet` checkpoint holds besides the solver state of
@@ -37,7 +38,7 @@ namespace compax::cli
 
   /**
    * Reads @p folder/tablet.h5 and checks every file it lists; throws
-   * coupling::Hdf5ArchiveError or std::runtime_error with a one-line
+   * Hdf5ArchiveError or std::runtime_error with a one-line
    * reason. @p ranks, if given, must be the number of MPI ranks it was
    * written with.
    */
@@ -45,4 +46,23 @@ namespace compax::cli
   read_tablet_checkpoint(const std::filesystem::path &folder,
                          const std::string           &parameters,
                          std::optional<unsigned int>  ranks);
-} // namespace compax::cli
+
+  /// Why a run folder's checkpoint cannot be resumed, as one line (a
+  /// program names its input with it; `compax tablet` gives it as bad
+  /// input of Output/Resume from).
+  class TabletResumeError : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
+
+  /**
+   * The checkpoint of the run folder @p run_folder (its checkpoint/
+   * folder), read and checked as read_tablet_checkpoint() does; throws
+   * TabletResumeError with the reason whatever is wrong.
+   */
+  TabletCheckpoint
+  read_tablet_resume(const std::filesystem::path &run_folder,
+                     const std::string           &parameters,
+                     std::optional<unsigned int>  ranks);
+} // namespace compax::coupling

@@ -1,4 +1,4 @@
-#include "apps/tablet/tablet_checkpoint.h"
+#include "coupling/tablet_checkpoint.h"
 
 #include "coupling/hdf5_archive.h"
 
@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace compax::cli
+namespace compax::coupling
 {
   namespace
   {
@@ -68,9 +68,8 @@ namespace compax::cli
                           const TabletCheckpoint      &checkpoint)
   {
     namespace fs = std::filesystem;
-    coupling::Hdf5ArchiveWriter archive((folder / "tablet.h5").string(),
-                                        {coupling::archive_kind::tablet,
-                                         parameters});
+    Hdf5ArchiveWriter archive((folder / "tablet.h5").string(),
+                              {archive_kind::tablet, parameters});
     archive.write_attribute("ranks", double(ranks));
     std::vector<double> steps;
     for (const auto &s : checkpoint.steps)
@@ -91,7 +90,7 @@ namespace compax::cli
     std::sort(names.begin(), names.end());
     std::string list;
     for (const std::string &name : names)
-      list += coupling::file_hash((folder / name).string()) + " " + name + "\n";
+      list += file_hash((folder / name).string()) + " " + name + "\n";
     archive.write_text("files", list);
     archive.commit();
   }
@@ -101,30 +100,26 @@ namespace compax::cli
                          const std::string                &parameters,
                          const std::optional<unsigned int> ranks)
   {
-    const std::string                 path    = (folder / "tablet.h5").string();
-    const coupling::Hdf5ArchiveReader archive = [&] {
+    const std::string       path    = (folder / "tablet.h5").string();
+    const Hdf5ArchiveReader archive = [&] {
       try
         {
-          return coupling::open_archive(path,
-                                        coupling::archive_kind::tablet,
-                                        parameters);
+          return open_archive(path, archive_kind::tablet, parameters);
         }
-      catch (const coupling::Hdf5ArchiveError &e)
+      catch (const Hdf5ArchiveError &e)
         {
           // Named from the run folder that Resume from gives.
-          throw coupling::Hdf5ArchiveError(path,
-                                           "checkpoint/tablet.h5 "
-                                             + e.reason());
+          throw Hdf5ArchiveError(path, "checkpoint/tablet.h5 " + e.reason());
         }
     }();
     const double written = archive.read_attribute("ranks");
     if (ranks && written != double(*ranks))
-      throw coupling::Hdf5ArchiveError(
-        path,
-        "checkpoint/tablet.h5 was written by a run on "
-          + std::to_string(std::llround(written))
-          + " MPI rank(s), this run has " + std::to_string(*ranks)
-          + " (resume on as many ranks)");
+      throw Hdf5ArchiveError(path,
+                             "checkpoint/tablet.h5 was written by a run on "
+                               + std::to_string(std::llround(written))
+                               + " MPI rank(s), this run has "
+                               + std::to_string(*ranks)
+                               + " (resume on as many ranks)");
     TabletCheckpoint c;
     const auto       steps = archive.read_array("steps");
     if (steps.empty() || steps.size() % step_fields != 0)
@@ -141,17 +136,50 @@ namespace compax::cli
           = space == std::string::npos ? "" : line.substr(space + 1);
         if (space != 16 || name.empty() || name.find('/') != std::string::npos)
           throw std::runtime_error("malformed file list");
-        const std::string hash = coupling::file_hash((folder / name).string());
+        const std::string hash = file_hash((folder / name).string());
         if (hash.empty())
-          throw coupling::Hdf5ArchiveError(path,
-                                           "checkpoint/tablet.h5: its file '"
-                                             + name + "' is missing");
+          throw Hdf5ArchiveError(path,
+                                 "checkpoint/tablet.h5: its file '" + name
+                                   + "' is missing");
         if (hash != line.substr(0, space))
-          throw coupling::Hdf5ArchiveError(
+          throw Hdf5ArchiveError(
             path,
             "checkpoint/tablet.h5: its file '" + name
               + "' differs from the one it was written with (damaged)");
       }
     return c;
   }
-} // namespace compax::cli
+
+  TabletCheckpoint
+  read_tablet_resume(const std::filesystem::path      &run_folder,
+                     const std::string                &parameters,
+                     const std::optional<unsigned int> ranks)
+  {
+    namespace fs = std::filesystem;
+    if (!fs::is_directory(run_folder))
+      throw TabletResumeError(fs::exists(run_folder)
+                                ? "is not a folder (give the output folder "
+                                  "of the earlier run)"
+                                : "no such folder");
+    if (!fs::is_directory(run_folder / "checkpoint"))
+      throw TabletResumeError(
+        "has no checkpoint folder (run with Checkpoint interval > 0)");
+    try
+      {
+        return read_tablet_checkpoint(run_folder / "checkpoint",
+                                      parameters,
+                                      ranks);
+      }
+    catch (const Hdf5ArchiveError &e)
+      {
+        throw TabletResumeError(e.reason());
+      }
+    catch (const std::exception &e)
+      {
+        // Content that does not fit together.
+        throw TabletResumeError("a damaged "
+                                + describe_archive_kind(archive_kind::tablet)
+                                + " (" + e.what() + ")");
+      }
+  }
+} // namespace compax::coupling
