@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include <omp.h>
+
 namespace compax::dem
 {
   ContactResponse
@@ -75,6 +77,106 @@ namespace compax::dem
     return r;
   }
 
+  namespace
+  {
+    /// A pair's response with its normal and centre distance.
+    struct PairForce
+    {
+      Eigen::Vector3d normal;
+      double          distance;
+      ContactResponse response;
+    };
+
+    /// The response of pair @p c; false for a pair that contributes
+    /// nothing (virgin and apart: most candidates of the list).
+    inline bool
+    pair_force(const ParticleSystem &p, const PairContact &c, PairForce &f)
+    {
+      const Eigen::Vector3d d     = p.positions[c.i] - p.positions[c.j];
+      const double          dist  = d.norm();
+      const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
+      if (c.history.a_p == 0.0
+          && (gamma <= 0.0 || gamma < ContactAssembler::touch_tolerance * dist))
+        return false;
+      f.response = contact_response(c.law, gamma, c.history);
+      if (f.response.force == 0.0 && f.response.stiffness == 0.0)
+        return false;
+      f.normal   = d / dist;
+      f.distance = dist;
+      return true;
+    }
+
+    /// The loaded-contact count and force sum of ContactSums.
+    inline void
+    count_loaded(const ContactResponse &r,
+                 std::size_t           &n_loaded,
+                 double                &sum_abs)
+    {
+      if (r.force != 0.0)
+        {
+          ++n_loaded;
+          sum_abs += std::abs(r.force);
+        }
+    }
+  } // namespace
+
+  void
+  ContactAssembler::add_pair_forces_in_parallel(const Bed       &bed,
+                                                Eigen::VectorXd &F,
+                                                std::size_t     &n_loaded,
+                                                double          &sum_abs)
+  {
+    const ParticleSystem &p       = bed.particles;
+    const auto           &pairs   = bed.contacts.pairs;
+    const int             threads = omp_get_max_threads();
+    const auto            size    = static_cast<Eigen::Index>(F.size());
+    thread_forces.resize(threads);
+    thread_loaded.assign(threads, 0);
+    thread_sum_abs.assign(threads, 0.0);
+    for (Eigen::VectorXd &f : thread_forces)
+      f.resize(size);
+#pragma omp parallel num_threads(threads)
+    {
+      const int        t  = omp_get_thread_num();
+      Eigen::VectorXd &Ft = thread_forces[t];
+      Ft.setZero();
+      // Thread-local counters: neighbouring slots of one vector would
+      // share a cache line and serialise the threads.
+      std::size_t loaded = 0;
+      double      sum    = 0.0;
+      const auto  n      = static_cast<std::int64_t>(pairs.size());
+#pragma omp for schedule(static)
+      for (std::int64_t k = 0; k < n; ++k)
+        {
+          PairForce f;
+          if (!pair_force(p, pairs[k], f))
+            continue;
+          scatter_pair(Ft,
+                       nullptr,
+                       pairs[k].i,
+                       pairs[k].j,
+                       0,
+                       0,
+                       f.normal,
+                       f.distance,
+                       f.response);
+          count_loaded(f.response, loaded, sum);
+        }
+      thread_loaded[t]  = loaded;
+      thread_sum_abs[t] = sum;
+      // The loop's implicit barrier: every thread's vector is complete.
+#pragma omp for schedule(static)
+      for (Eigen::Index i = 0; i < size; ++i)
+        for (int s = 0; s < threads; ++s)
+          F[i] += thread_forces[s][i];
+    }
+    for (int t = 0; t < threads; ++t)
+      {
+        n_loaded += thread_loaded[t];
+        sum_abs += thread_sum_abs[t];
+      }
+  }
+
   ContactSums
   ContactAssembler::residual(Bed                &bed,
                              const ContactModel &model,
@@ -111,34 +213,25 @@ namespace compax::dem
     double      sum_abs = 0.0;
 
     const auto &pairs = bed.contacts.pairs;
-    for (std::size_t k = 0; k < pairs.size(); ++k)
-      {
-        const PairContact    &c     = pairs[k];
-        const Eigen::Vector3d d     = p.positions[c.i] - p.positions[c.j];
-        const double          dist  = d.norm();
-        const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
-        if (c.history.a_p == 0.0
-            && (gamma <= 0.0 || gamma < touch_tolerance * dist))
-          continue; // virgin and apart (most candidates of the list)
-        const ContactResponse r = contact_response(c.law, gamma, c.history);
-        if (r.force == 0.0 && r.stiffness == 0.0)
-          continue;
-        const Eigen::Vector3d n = d / dist;
-        scatter_pair(F,
-                     with_stiffness ? K : nullptr,
-                     c.i,
-                     c.j,
-                     with_stiffness ? pattern.ij(k) : 0,
-                     with_stiffness ? pattern.ji(k) : 0,
-                     n,
-                     dist,
-                     r);
-        if (r.force != 0.0)
-          {
-            ++sums.n_loaded;
-            sum_abs += std::abs(r.force);
-          }
-      }
+    if (!with_stiffness && pairs.size() >= parallel_pairs)
+      add_pair_forces_in_parallel(bed, F, sums.n_loaded, sum_abs);
+    else
+      for (std::size_t k = 0; k < pairs.size(); ++k)
+        {
+          PairForce f;
+          if (!pair_force(p, pairs[k], f))
+            continue;
+          scatter_pair(F,
+                       with_stiffness ? K : nullptr,
+                       pairs[k].i,
+                       pairs[k].j,
+                       with_stiffness ? pattern.ij(k) : 0,
+                       with_stiffness ? pattern.ji(k) : 0,
+                       f.normal,
+                       f.distance,
+                       f.response);
+          count_loaded(f.response, sums.n_loaded, sum_abs);
+        }
 
     for (const WallContact &c : bed.contacts.walls)
       {

@@ -63,12 +63,32 @@ namespace compax::dem
              Eigen::VectorXd    &F,
              BlockSparseMatrix  &K);
 
+    /**
+     * Beds with at least this many candidate pairs evaluate the pairs of a
+     * residual on every OpenMP thread, each into its own force vector, and
+     * sum those in thread order (the same result for the same thread
+     * count). Below it the threads' start and the sum of their vectors
+     * cost about what they save.
+     */
+    static constexpr std::size_t parallel_pairs = 20000;
+
   private:
     template <bool with_stiffness>
     ContactSums
     evaluate(const Bed &bed, Eigen::VectorXd &F, BlockSparseMatrix *K);
 
+    /// The pairs' forces into F on every thread (residual only).
+    void
+    add_pair_forces_in_parallel(const Bed       &bed,
+                                Eigen::VectorXd &F,
+                                std::size_t     &n_loaded,
+                                double          &sum_abs);
 
     PairPattern pattern;
+    /// Per-thread force vectors and sums of add_pair_forces_in_parallel,
+    /// kept between calls so that a residual allocates nothing.
+    std::vector<Eigen::VectorXd> thread_forces;
+    std::vector<std::size_t>     thread_loaded;
+    std::vector<double>          thread_sum_abs;
   };
 } // namespace compax::dem

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <omp.h>
+
 #include <cmath>
 #include <random>
 
@@ -94,4 +96,59 @@ TEST(SolverStiffness, EqualsCentralDifferenceOfResidual)
     EXPECT_LT((Kd.col(k) - fd.col(k)).norm(), 1e-6 * Kd.col(k).norm())
       << "column " << k;
   EXPECT_LT((Kd - fd).norm(), 1e-6 * Kd.norm());
+}
+
+/// The residual of a bed large enough to be evaluated on every thread
+/// (ContactAssembler::parallel_pairs) equals the serial sum of assemble()
+/// to round-off, and its pair forces cancel (action equals reaction): the
+/// net force of the bed is that of the walls alone.
+TEST(SolverStiffness, ThreadedResidualEqualsSerialAssembly)
+{
+  const ContactModel model = material1::contact_model();
+  const double       R     = material1::R;
+  const int          side  = 24;
+  const double       a     = 2 * R * 0.97;
+  Bed                bed;
+  bed.walls.diameter    = 2 * side * a;
+  bed.walls.lower_punch = 0.0;
+  bed.walls.upper_punch = side * a + R;
+  bed.contacts.set_skin(0.5 * R);
+  std::mt19937_64 rng(7);
+  auto            u = [&]() { return (rng() >> 11) * 0x1.0p-53 - 0.5; };
+  for (int k = 0; k < side; ++k)
+    for (int j = 0; j < side; ++j)
+      for (int i = 0; i < side; ++i)
+        {
+          Eigen::Vector3d x((i - side / 2) * a, (j - side / 2) * a, R + k * a);
+          x += 0.02 * R * Eigen::Vector3d(u(), u(), u());
+          bed.particles.add(x, R * (1.0 + 0.04 * u()));
+        }
+  bed.contacts.rebuild(bed.particles, bed.walls, model);
+  ASSERT_GE(bed.contacts.pairs.size(), ContactAssembler::parallel_pairs);
+
+  omp_set_num_threads(2);
+  ContactAssembler  assembler;
+  BlockSparseMatrix K;
+  Eigen::VectorXd   threaded, serial;
+  const ContactSums s_threaded = assembler.residual(bed, model, threaded);
+  const ContactSums s_serial   = assembler.assemble(bed, model, serial, K);
+  ASSERT_GT(s_serial.n_loaded, bed.particles.size());
+  EXPECT_EQ(s_threaded.n_loaded, s_serial.n_loaded);
+  EXPECT_NEAR(s_threaded.mean_force,
+              s_serial.mean_force,
+              1e-12 * s_serial.mean_force);
+  EXPECT_LE((threaded - serial).lpNorm<Eigen::Infinity>(),
+            1e-12 * s_serial.mean_force);
+
+  // Action equals reaction: the pairs add nothing to the net force, so
+  // sum_i F_i is the punches' force along z (the bed touches no die wall).
+  Eigen::Vector3d net = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < bed.particles.size(); ++i)
+    net += threaded.segment<3>(3 * i);
+  const double punches
+    = s_threaded.wall_force[static_cast<int>(Wall::lower_punch)]
+      - s_threaded.wall_force[static_cast<int>(Wall::upper_punch)];
+  EXPECT_NEAR(net[0], 0.0, 1e-9 * s_serial.mean_force);
+  EXPECT_NEAR(net[1], 0.0, 1e-9 * s_serial.mean_force);
+  EXPECT_NEAR(net[2], -punches, 1e-9 * std::abs(punches) + 1e-9);
 }
