@@ -232,6 +232,7 @@ namespace compax::cli
       int                 rve_particles = 0, rve_seed = 0, rve_shear_steps = 0;
       double              rve_strain_step = 0.0;
       std::vector<double> loose_branches;
+      double              rve_final_density = 0.0;
       int  tablet_cells = 0, tablet_steps = 0, tablet_unloading_steps = 0;
       bool fe2           = true;
       int  fe2_particles = 0, fe2_pool = 0, fe2_cells = 0, fe2_steps = 0,
@@ -387,6 +388,16 @@ namespace compax::cli
         "carries 0.18 MPa). Each must lie where the RVE is jammed (an "
         "unjammed branch has no moduli and the database stops); empty: "
         "none.");
+      prm.declare_entry(
+        "Final relative density",
+        "",
+        dealii::Patterns::Anything(),
+        "Relative density the RVE's uniaxial compaction path reaches, in "
+        "[Die/Final relative density, 0.99]; empty: Die/Final relative "
+        "density. The die's interior is denser than the die average (its "
+        "wall layer is looser), so interior.csv needs the RVE beyond the "
+        "die's final density to compare the interior's last states. Unit: "
+        "-.");
       prm.leave_subsection();
 
       prm.enter_subsection("Tablet");
@@ -420,6 +431,24 @@ namespace compax::cli
         s.emplace_back(section + "/" + e, prm.get(e));
       prm.leave_subsection();
       return s;
+    }
+
+    /// RVE/Final relative density: empty means the die's.
+    double
+    rve_final_density(const std::string &entry, const double die_final)
+    {
+      if (entry.find_first_not_of(" \t") == std::string::npos)
+        return die_final;
+      char        *end   = nullptr;
+      const double value = std::strtod(entry.c_str(), &end);
+      if (end == entry.c_str()
+          || std::string(end).find_first_not_of(" \t") != std::string::npos
+          || !(value >= die_final && value <= 0.99))
+        reject_entry("RVE/Final relative density",
+                     entry,
+                     "a relative density in [Die/Final relative density = "
+                       + format_number(die_final) + ", 0.99], or empty");
+      return value;
     }
 
     CompareSetup
@@ -479,6 +508,8 @@ namespace compax::cli
       c.rve_strain_step = prm.get_double("Compaction strain step");
       c.rve_shear_steps = prm.get_integer("Shear steps");
       c.loose_branches  = get_real_list(prm, "Loose branches");
+      c.rve_final_density
+        = rve_final_density(prm.get("Final relative density"), c.final_density);
       prm.leave_subsection();
 
       prm.enter_subsection("Tablet");
@@ -543,7 +574,8 @@ namespace compax::cli
         {"Multiscale/Packing/Seed", std::to_string(c.rve_seed)},
         {"Multiscale/Packing/Initial relative density",
          number(fill.relative_density)},
-        {"Multiscale/Paths/Final relative density", number(c.final_density)},
+        {"Multiscale/Paths/Final relative density",
+         number(c.rve_final_density)},
         {"Multiscale/Paths/Branch densities", list.str()},
         {"Multiscale/Paths/Compaction strain step", number(c.rve_strain_step)},
         {"Multiscale/Paths/Shear steps", std::to_string(c.rve_shear_steps)}};

@@ -6,8 +6,10 @@
 #include "apps/rve/rve_snapshot.h"
 #include "apps/rve/rve_tables.h"
 #include "coupling/rve_archive.h"
+#include "dem/analysis/jamming_fit.h"
 #include "dem/io/particle_vtu.h"
 
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -193,6 +195,46 @@ namespace compax::cli
     return o;
   }
 
+  namespace
+  {
+    /**
+     * jamming.csv of a uniaxial compaction: Eq. (14) fitted to the loading
+     * states as the die fits it (fit_jamming), the cell's -sigma_zz standing
+     * for the punch pressure and the die's pressure resolution (the force
+     * floor fraction of the jamming pressure). Empty cells when it cannot be
+     * fitted. Returns the fit for the log.
+     */
+    std::optional<dem::CoordinationFit>
+    write_jamming_fit(const std::filesystem::path &file,
+                      const RveStudy              &study,
+                      const RveProgress           &p)
+    {
+      std::vector<dem::CompactionState> states;
+      for (const std::vector<double> &row : p.rows)
+        if (row[rve_column("stage")] == 0.0 && row[rve_column("step")] > 0.0)
+          states.push_back({row[rve_column("relative_density")],
+                            -row[rve_column("sigma_zz")],
+                            row[rve_column("coordination_number")]});
+      const double resolution
+        = study.loading.force_floor_fraction * study.loading.jamming_pressure;
+      const auto    fit = dem::fit_jamming(states, resolution);
+      std::ofstream out(file);
+      out << "rho_c_Z,Z_c,Z_0,theta,rms,jammed_states\n"
+          << std::setprecision(12);
+      std::size_t jammed = 0;
+      for (const dem::CompactionState &s : states)
+        jammed += s.coordination_number > 0.0 && s.axial_pressure > resolution;
+      if (fit)
+        out << fit->rho_c << ',' << fit->Z_c << ',' << fit->Z_0 << ','
+            << fit->theta << ',' << fit->rms << ',' << jammed << '\n';
+      else
+        out << ",,,,," << jammed << '\n';
+      if (!out)
+        throw std::runtime_error("cannot write " + file.string());
+      return fit;
+    }
+  } // namespace
+
   RveOutcome
   RvePathOutput::finish(const dem::RvePathResult &result,
                         const dem::RvePathStudy  &path)
@@ -221,6 +263,11 @@ namespace compax::cli
     write_table(folder / "moduli.csv", moduli_columns(), p.moduli);
     write_table(folder / "timing.csv", timing_columns(), p.timing);
     plot(folder, !study.elastic);
+    if (study.path == dem::RveStrainPath::uniaxial && !study.elastic)
+      if (const auto fit = write_jamming_fit(folder / "jamming.csv", study, p))
+        std::cout << "Eq. 14 on the uniaxial compaction: rho_c_Z "
+                  << fixed(fit->rho_c, 4) << ", Z_c " << fixed(fit->Z_c, 3)
+                  << ", theta " << fixed(fit->theta, 3) << std::endl;
     const auto &timing = result.timings;
     out.timings.total  = seconds_since(started);
     std::cout << "Cell of " << bed.particles.size()

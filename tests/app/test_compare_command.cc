@@ -509,6 +509,15 @@ TEST_F(CompareCommand, OneUnloadingPointIsBadInput)
   expect_rejected(compax("compare bad.prm -o out"), "Die/Unloading points");
 }
 
+TEST_F(CompareCommand, RvePathBelowTheDiesFinalDensityIsBadInput)
+{
+  // The RVE path must reach at least the die's final density (0.87 by
+  // default): the tablet's table and interior.csv are compared up to it.
+  write("bad.prm", "subsection RVE\n  set Final relative density = 0.8\nend\n");
+  expect_rejected(compax("compare bad.prm -o out"),
+                  "entry 'RVE/Final relative density' = 0.8");
+}
+
 TEST_F(CompareCommand, BadFe2SwitchIsBadInput)
 {
   write("bad.prm", "subsection Compare\n  set FE2 = maybe\nend\n");

@@ -5,6 +5,7 @@
 
 #include "dem/analysis/curve_fits.h"
 #include "dem/analysis/fabric.h"
+#include "dem/analysis/jamming_fit.h"
 #include "dem/analysis/unloading_moduli.h"
 
 #include <gtest/gtest.h>
@@ -46,6 +47,29 @@ TEST(CurveFits, CoordinationPowerLawOfEquation14IsRecovered)
   EXPECT_NEAR(fit.rho_c, rho_c, 1e-5);
   EXPECT_NEAR(fit.theta, theta, 1e-4);
   EXPECT_LT(fit.rms, 1e-8);
+}
+
+TEST(CurveFits, JammingFitUsesOnlyStatesAboveThePressureResolution)
+{
+  // Loose states below the resolution carry a spurious Z (a chain the
+  // contact law resolves, on a bed that carries nothing at the punch):
+  // they must not enter Eq. 14, or its rho_c_Z moves to them.
+  const double                 Z_c = 4.2, Z_0 = 8.0, rho_c = 0.62, theta = 0.4;
+  const double                 resolution = 5e3;
+  std::vector<CompactionState> states;
+  for (double r : densities(0.55, 0.61, 7))
+    states.push_back({r, 0.5 * resolution, 3.0});
+  for (double r : densities(0.625, 0.9, 20))
+    states.push_back(
+      {r, 1e8 * (r - rho_c), Z_c + Z_0 * std::pow(r - rho_c, theta)});
+  const auto fit = fit_jamming(states, resolution);
+  ASSERT_TRUE(fit.has_value());
+  EXPECT_NEAR(fit->rho_c, rho_c, 1e-5);
+  EXPECT_NEAR(fit->Z_c, Z_c, 1e-4);
+  EXPECT_NEAR(fit->theta, theta, 1e-4);
+  // Four jammed states are too few for four parameters.
+  states.resize(7 + 4);
+  EXPECT_FALSE(fit_jamming(states, resolution).has_value());
 }
 
 TEST(CurveFits, PunchPressurePowerLawOfEquation15WithNoise)

@@ -1,0 +1,29 @@
+#include "dem/analysis/jamming_fit.h"
+
+#include <exception>
+
+namespace compax::dem
+{
+  std::optional<CoordinationFit>
+  fit_jamming(const std::vector<CompactionState> &states,
+              const double                        pressure_resolution)
+  {
+    std::vector<double> rho, Z;
+    for (const CompactionState &s : states)
+      if (s.coordination_number > 0.0 && s.axial_pressure > pressure_resolution)
+        {
+          rho.push_back(s.relative_density);
+          Z.push_back(s.coordination_number);
+        }
+    if (rho.size() < 5)
+      return std::nullopt;
+    try
+      {
+        return fit_coordination(rho, Z);
+      }
+    catch (const std::exception &)
+      {
+        return std::nullopt;
+      }
+  }
+} // namespace compax::dem

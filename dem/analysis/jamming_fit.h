@@ -1,0 +1,37 @@
+#pragma once
+
+#include "dem/analysis/curve_fits.h"
+
+#include <optional>
+#include <vector>
+
+/**
+ * @file
+ * Where a compaction jams, measured the same way for the die and the
+ * periodic cell: Eq. (14) of Gonzalez 2018 fitted to the jammed states.
+ */
+
+namespace compax::dem
+{
+  /// One converged state of a uniaxial compaction.
+  struct CompactionState
+  {
+    double relative_density = 0.0;
+    /// Axial compressive stress [Pa]: the die's upper punch pressure, the
+    /// cell's -sigma_zz.
+    double axial_pressure = 0.0;
+    /// Coordination number (contacts carrying a resolved force) [-].
+    double coordination_number = 0.0;
+  };
+
+  /**
+   * Eq. (14), Z = Z_c + Z_0 (rho - rho_c_Z)^theta, fitted to the jammed
+   * states: those whose axial pressure exceeds @p pressure_resolution [Pa]
+   * and whose Z is positive (below it the bed carries nothing the contact
+   * law resolves). Empty with fewer than five jammed states or when the
+   * fit fails.
+   */
+  std::optional<CoordinationFit>
+  fit_jamming(const std::vector<CompactionState> &states,
+              double                              pressure_resolution);
+} // namespace compax::dem
