@@ -141,8 +141,9 @@ namespace compax::dem
   class DieStudy
   {
   public:
-    /// Sets the compaction targets of a deposit-free start (throws
-    /// DieTargetError if the final density is not above its bed's).
+    /// Sets the compaction targets of a resumed start from the density of
+    /// its first row, the deposit (throws DieTargetError if the final
+    /// density is not above it); a fresh deposit gets them in run().
     DieStudy(ContactModel    model,
              DieStudyOptions options,
              DieStudyStart   start = DieStudyStart::deposit());
