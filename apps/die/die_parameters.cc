@@ -320,8 +320,8 @@ namespace compax::cli
       "(consolidation with Hertz contacts), for both formulations.");
   }
 
-  DieStudy
-  get_die_study(dealii::ParameterHandler &prm)
+  DieInput
+  get_die_input(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Packing");
     std::vector<double> fractions = get_real_list(prm, "Material fractions");
@@ -510,12 +510,8 @@ namespace compax::cli
                               "Solver/Maximum iterations"});
     const std::string state_parameters = canonical_parameters(
       prm, {"Material", "Material 2", "Bonding", "Packing", "Contact"});
-    return {deposition,
-            model,
-            protocol,
-            equilibrium,
-            final_density,
-            steps,
+    return {model,
+            {deposition, protocol, equilibrium, final_density, steps},
             rerun,
             resume,
             resume_parameters,
@@ -523,16 +519,22 @@ namespace compax::cli
   }
 
   void
-  set_compaction_targets(DieStudy &study, const double rho_0)
+  reject_final_density(const dem::DieStudyOptions &study,
+                       const double                packing_density)
   {
-    if (study.final_density <= rho_0)
-      reject_entry("Protocol/Final relative density",
-                   format_number(study.final_density),
-                   "must exceed the packing's relative density "
-                     + format_number(rho_0));
-    study.protocol.compaction_targets
-      = dem::density_targets(rho_0,
-                             study.final_density,
-                             study.compaction_steps);
+    reject_entry("Protocol/Final relative density",
+                 format_number(study.final_density),
+                 "must exceed the packing's relative density "
+                   + format_number(packing_density));
+  }
+
+  void
+  set_compaction_targets(dem::DieStudyOptions &study, const double rho_0)
+  {
+    study.protocol.compaction_targets = naming_final_density(study, [&] {
+      return dem::die_compaction_targets(rho_0,
+                                         study.final_density,
+                                         study.compaction_steps);
+    });
   }
 } // namespace compax::cli

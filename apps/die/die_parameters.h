@@ -1,6 +1,6 @@
 #pragma once
 
-#include "dem/die/die_compaction.h"
+#include "dem/die/die_study.h"
 #include "dem/packing/ballistic_deposition.h"
 #include "dem/solver/contact_model.h"
 
@@ -8,17 +8,12 @@
 
 namespace compax::cli
 {
-  /// Everything `compax die` reads from its .prm, in the library's types.
-  struct DieStudy
+  /// Everything `compax die` reads from its .prm: the study in the
+  /// library's types, and where it starts from.
+  struct DieInput
   {
-    dem::DepositionParameters deposition;
-    dem::ContactModel         model;
-    dem::DieProtocol          protocol;
-    dem::EquilibriumOptions   equilibrium;
-    /// In-die relative density at which compaction stops [-].
-    double final_density;
-    /// Number of equal density steps from the packing to final_density.
-    int compaction_steps;
+    dem::ContactModel    model;
+    dem::DieStudyOptions study;
     /// A branch checkpoint (checkpoints/branch-<k>.h5) to rerun that
     /// unloading branch from, instead of the whole study; empty: none.
     std::string rerun_branch_from;
@@ -39,11 +34,33 @@ namespace compax::cli
   declare_die_parameters(dealii::ParameterHandler &prm);
 
   /// Reads and cross-checks them; throws InputError naming the entry.
-  DieStudy
-  get_die_study(dealii::ParameterHandler &prm);
+  DieInput
+  get_die_input(dealii::ParameterHandler &prm);
 
   /// The compaction targets from the packing's relative density @p rho_0
   /// to the final density; throws InputError if that is not above it.
   void
-  set_compaction_targets(DieStudy &study, double rho_0);
+  set_compaction_targets(dem::DieStudyOptions &study, double rho_0);
+
+  /// Throws the InputError of a final density not above the packing's
+  /// @p packing_density.
+  [[noreturn]] void
+  reject_final_density(const dem::DieStudyOptions &study,
+                       double                      packing_density);
+
+  /// Runs @p action (which may build or run a dem::DieStudy) and turns a
+  /// dem::DieTargetError into the InputError naming the final density.
+  template <typename Action>
+  auto
+  naming_final_density(const dem::DieStudyOptions &study, Action &&action)
+  {
+    try
+      {
+        return action();
+      }
+    catch (const dem::DieTargetError &e)
+      {
+        reject_final_density(study, e.packing_density);
+      }
+  }
 } // namespace compax::cli

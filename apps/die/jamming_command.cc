@@ -22,7 +22,7 @@ namespace compax::cli
     };
 
     JammingStudyInput
-    read_jamming(dealii::ParameterHandler &prm, const DieStudy &die)
+    read_jamming(dealii::ParameterHandler &prm, const DieInput &die)
     {
       JammingStudyInput in;
       prm.enter_subsection("Jamming");
@@ -39,7 +39,7 @@ namespace compax::cli
           in.cases.push_back({K, protocol == "frozen-history"});
       if (in.cases.empty())
         reject_entry("Jamming/Protocols", "''", "give one or both protocols");
-      if (die.protocol.elastic)
+      if (die.study.protocol.elastic)
         reject_entry("Contact/Contact law",
                      "elastic",
                      "the jamming study compares bonded beds; use bonded");
@@ -138,15 +138,16 @@ namespace compax::cli
       void
       check_parameters(dealii::ParameterHandler &prm) const override
       {
-        read_jamming(prm, get_die_study(prm));
+        read_jamming(prm, get_die_input(prm));
       }
 
       int
       run(dealii::ParameterHandler    &prm,
           const std::filesystem::path &folder) const override
       {
-        DieStudy                study = get_die_study(prm);
-        const JammingStudyInput input = read_jamming(prm, study);
+        DieInput                die   = get_die_input(prm);
+        dem::DieStudyOptions   &study = die.study;
+        const JammingStudyInput input = read_jamming(prm, die);
         std::cout << "Packing " << study.deposition.n_particles
                   << " particles by ballistic deposition ..." << std::endl;
         const dem::Bed deposit = dem::fill_die(study.deposition);
@@ -160,7 +161,7 @@ namespace compax::cli
                       << "Case K_Ic = " << c.fracture_toughness << " Pa m^1/2, "
                       << c.protocol_name() << std::endl;
             results.push_back(dem::run_jamming_case(deposit,
-                                                    study.model,
+                                                    die.model,
                                                     study.protocol,
                                                     study.equilibrium,
                                                     c,

@@ -306,6 +306,8 @@ namespace compax::dem
         write_csv_row(*csv, r);
         csv->flush();
       }
+    if (on_record)
+      on_record(r);
   }
 
   void

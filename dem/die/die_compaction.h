@@ -207,6 +207,9 @@ namespace compax::dem
     void
     set_output(std::ostream *csv, std::ostream *progress);
 
+    /// Called with every row as it is emitted (after the CSV got it).
+    std::function<void(const DieRecord &row)> on_record;
+
     /**
      * Called with the three states of each branch that Gonzalez 2018 Sec.
      * 5.5 analyses (stage "compaction": the compaction path at the
