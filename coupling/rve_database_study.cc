@@ -2,7 +2,8 @@
 
 #include "fem/drucker_prager_cap.h"
 
-#include <chrono>
+#include <deal.II/base/timer.h>
+
 #include <stdexcept>
 #include <utility>
 
@@ -10,14 +11,6 @@ namespace compax::coupling
 {
   namespace
   {
-    using Clock = std::chrono::steady_clock;
-
-    double
-    seconds_since(const Clock::time_point t)
-    {
-      return std::chrono::duration<double>(Clock::now() - t).count();
-    }
-
     DatabaseComparison
     compare(std::string        name,
             const RveDatabase &reference,
@@ -56,7 +49,7 @@ namespace compax::coupling
   RveDatabaseStudyResult
   RveDatabaseStudy::run(const DatabaseResume *resume) const
   {
-    const auto             t0 = Clock::now();
+    const dealii::Timer    database_timer;
     RveDatabaseStudyResult out;
     const auto             progress = [this](const std::string &line) {
       if (on_progress)
@@ -77,7 +70,7 @@ namespace compax::coupling
         out.failure = e.what();
         return out;
       }
-    out.database_seconds = seconds_since(t0);
+    out.database_seconds = database_timer.wall_time();
     if (out.database.stopped)
       {
         out.outcome = RveDatabaseOutcome::stopped;
@@ -87,7 +80,7 @@ namespace compax::coupling
     out.fit = fit_drucker_prager_cap(out.database, &out.notes);
     if (!options.validate)
       return out;
-    const auto                  t1 = Clock::now();
+    const dealii::Timer         validation_timer;
     const fem::DruckerPragerCap law(to_dpc_table(out.fit));
     try
       {
@@ -98,7 +91,7 @@ namespace compax::coupling
         out.outcome = RveDatabaseOutcome::validation_failed;
         out.failure = e.what();
       }
-    out.validation_seconds = seconds_since(t1);
+    out.validation_seconds = validation_timer.wall_time();
     return out;
   }
 
