@@ -1,6 +1,6 @@
 #include "apps/tablet/tablet_command.h"
 
-#include "apps/tablet/multiscale_material.h"
+#include "apps/tablet/multiscale_parameters.h"
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
@@ -717,10 +717,6 @@ namespace compax::cli
         shared = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, shared, 0);
         if (!setup.multiscale_model.empty())
           {
-            // Every rank builds the same (seeded) material; rank 0 writes
-            // the database files.
-            const bool writer
-              = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
             try
               {
                 // The axial row of the model's stress frame: (r, z, theta)
@@ -730,13 +726,16 @@ namespace compax::cli
                   prm,
                   setup.multiscale_model,
                   shared,
-                  writer,
                   dim - 1,
-                  dealii::Utilities::pow(setup.solver.degree + 1, dim));
+                  dealii::Utilities::pow(setup.solver.degree + 1, dim),
+                  MPI_COMM_WORLD);
               }
             catch (const std::runtime_error &e)
               {
-                std::cerr << "compax tablet: " << e.what() << std::endl;
+                // Every rank fails alike; one reports.
+                if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)
+                    == 0)
+                  std::cerr << "compax tablet: " << e.what() << std::endl;
                 return not_converged;
               }
           }

@@ -1,9 +1,11 @@
-#include "apps/tablet/multiscale_material.h"
+#include "apps/tablet/multiscale_parameters.h"
 
 #include "apps/cli/parameters.h"
-#include "apps/database/database_study.h"
+#include "apps/database/database_outputs.h"
+#include "apps/database/database_parameters.h"
+#include "coupling/multiscale_database_material.h"
+#include "coupling/rve_database_archive.h"
 #include "coupling/rve_material.h"
-#include "fem/drucker_prager_cap.h"
 
 #include <iostream>
 
@@ -67,7 +69,7 @@ namespace compax::cli
   check_multiscale_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Multiscale");
-    get_database_study(prm, "Multiscale/");
+    get_database_setup(prm, "Multiscale/");
     prm.leave_subsection();
   }
 
@@ -75,20 +77,20 @@ namespace compax::cli
   make_multiscale_material(dealii::ParameterHandler    &prm,
                            const std::string           &model,
                            const std::filesystem::path &folder,
-                           const bool                   write_files,
                            const unsigned int           compaction_axis,
-                           const unsigned int           points_per_cell)
+                           const unsigned int           points_per_cell,
+                           MPI_Comm                     comm)
   {
     // What the database and the RVE states depend on.
     const std::string parameters = canonical_parameters(prm, {"Multiscale"});
     prm.enter_subsection("Multiscale");
-    DatabaseStudy study = get_database_study(prm, "Multiscale/");
+    DatabaseSetup setup = get_database_setup(prm, "Multiscale/");
     // The tablet's fill density may lie below a deposit's: the RVEs then
     // start from the deposit (see Packing/Protocol).
-    study.spec.denser_deposit = dem::DenserDeposit::keep;
+    setup.spec.denser_deposit = dem::DenserDeposit::keep;
     coupling::RveMaterialSpec fe2;
-    fe2.packing               = study.spec.packing;
-    fe2.loading               = study.spec.loading;
+    fe2.packing               = setup.spec.packing;
+    fe2.loading               = setup.spec.loading;
     fe2.pool_size             = prm.get_integer("Pool size");
     fe2.tangent_floor_modulus = prm.get_double("Tangent floor modulus");
     fe2.floor_stress
@@ -102,31 +104,30 @@ namespace compax::cli
     prm.leave_subsection();
 
     if (model == "multiscale-fe2")
-      return std::make_shared<coupling::RveMaterial>(fe2, study.cell.model);
+      return std::make_shared<coupling::RveMaterial>(fe2, setup.cell.model);
 
-    std::ostream  null(nullptr);
-    std::ostream &log = write_files ? std::cout : null;
-    log << "RVE response database (" << study.spec.packing.particle_count
-        << " particles, " << study.cell.size_description << "):" << std::endl;
-    const coupling::RveDatabase db
-      = coupling::build_rve_database(study.spec,
-                                     study.cell.model,
-                                     [&log](const std::string &line) {
-                                       log << "  " << line << std::endl;
-                                     });
-    std::vector<std::string> notes;
-    const auto rows = coupling::fit_drucker_prager_cap(db, &notes);
-    for (const std::string &n : notes)
-      log << "  note: " << n << std::endl;
-    // Every rank computed the same table; one writes it.
-    if (write_files)
-      {
-        const std::filesystem::path out = folder / "database";
-        std::filesystem::create_directories(out);
-        write_database_rows(out, db);
-        write_database_archive(out, db, parameters);
-        write_dpc_table(out, rows);
-      }
-    return std::make_shared<fem::DruckerPragerCap>(to_dpc_table(rows));
+    coupling::MultiscaleDatabaseObserver observer;
+    observer.started = [&setup] {
+      std::cout << "RVE response database ("
+                << setup.spec.packing.particle_count << " particles, "
+                << setup.cell.size_description << "):" << std::endl;
+    };
+    observer.progress
+      = [](const std::string &line) { std::cout << "  " << line << std::endl; };
+    observer.built = [&](const coupling::RveDatabaseStudyResult &result) {
+      for (const std::string &n : result.notes)
+        std::cout << "  note: " << n << std::endl;
+      const std::filesystem::path out = folder / "database";
+      std::filesystem::create_directories(out);
+      write_database_rows(out, result.database);
+      coupling::write_database_archive(out / "database.h5",
+                                       result.database,
+                                       parameters);
+      write_dpc_table(out, result.fit);
+    };
+    return coupling::make_multiscale_database_material(setup.spec,
+                                                       setup.cell.model,
+                                                       comm,
+                                                       observer);
   }
 } // namespace compax::cli
