@@ -154,6 +154,7 @@ def main():
         for d in (ref_dir, new_dir):
             if d.exists():
                 subprocess.call(["rm", "-rf", str(d)])
+        (work / name).mkdir(parents=True, exist_ok=True)
         rc_ref = run_case(a.reference, command, prm, ref_dir)
         rc_new = run_case(a.candidate, command, prm, new_dir)
         print("== %s (compax %s %s): exit %d / %d"

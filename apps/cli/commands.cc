@@ -7,6 +7,7 @@
 #include "apps/database/database_command.h"
 #include "apps/die/die_command.h"
 #include "apps/die/jamming_command.h"
+#include "apps/docs/docs_command.h"
 #include "apps/mcdem/calibrate_command.h"
 #include "apps/mcdem/mcdem_command.h"
 #include "apps/rve/rve_command.h"
@@ -29,6 +30,7 @@ namespace compax::cli
     commands.push_back(make_database_command());
     commands.push_back(make_bed_command());
     commands.push_back(make_compare_command());
+    commands.push_back(make_docs_command());
     return commands;
   }
 } // namespace compax::cli

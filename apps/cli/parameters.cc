@@ -561,6 +561,87 @@ namespace compax::cli
     });
   }
 
+  namespace
+  {
+    /// Inverse of mangled(): "_xx" (two hex digits) is the byte xx.
+    std::string
+    demangled(const std::string &name)
+    {
+      std::string result;
+      for (std::size_t k = 0; k < name.size(); ++k)
+        if (name[k] == '_' && k + 2 < name.size()
+            && std::isxdigit(static_cast<unsigned char>(name[k + 1]))
+            && std::isxdigit(static_cast<unsigned char>(name[k + 2])))
+          {
+            result += static_cast<char>(
+              std::stoi(name.substr(k + 1, 2), nullptr, 16));
+            k += 2;
+          }
+        else
+          result += name[k];
+      return result;
+    }
+
+    /// A table cell: no line breaks, '|' escaped.
+    std::string
+    cell(const std::string &text)
+    {
+      std::string result;
+      for (const char c : text)
+        if (c == '\n')
+          result += ' ';
+        else if (c == '|')
+          result += "\\|";
+        else
+          result += c;
+      return result.empty() ? " " : result;
+    }
+
+    /// One subsection of the JSON tree: its entries as a table, then its
+    /// subsections under deeper headings.
+    void
+    write_section_markdown(const boost::property_tree::ptree &section,
+                           const std::string                 &path,
+                           int                                level,
+                           std::ostream                      &out)
+    {
+      bool table = false;
+      for (const auto &[key, node] : section)
+        if (node.get_optional<std::string>("pattern_description"))
+          {
+            if (!table)
+              out << "| entry | default | allowed | meaning |\n"
+                  << "| --- | --- | --- | --- |\n";
+            table = true;
+            const std::string range
+              = allowed(node.get<std::string>("pattern_description"));
+            out << "| `" << cell(demangled(key)) << "` | `"
+                << cell(node.get<std::string>("default_value", "")) << "` | "
+                << cell(range) << " | "
+                << cell(node.get<std::string>("documentation", "")) << " |\n";
+          }
+      if (table)
+        out << '\n';
+      for (const auto &[key, node] : section)
+        if (!node.get_optional<std::string>("pattern_description")
+            && !node.empty())
+          {
+            const std::string name
+              = path.empty() ? demangled(key) : path + "/" + demangled(key);
+            out << std::string(level, '#') << " " << name << "\n\n";
+            write_section_markdown(node, name, level + 1, out);
+          }
+    }
+  } // namespace
+
+  void
+  write_parameters_markdown(const dealii::ParameterHandler &prm,
+                            const int                       level,
+                            std::ostream                   &out)
+  {
+    write_section_markdown(pattern_tree(prm), "", level, out);
+  }
+
   void
   reject_entry(const std::string &name,
                const std::string &value,

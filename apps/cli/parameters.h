@@ -126,6 +126,18 @@ namespace compax::cli
    * line "Allowed: ..." from its pattern (integer ranges, selections,
    * lists).
    */
+  /**
+   * Every entry of @p prm as Markdown tables (entry, default, allowed
+   * values, meaning with its unit), one per subsection, subsections under
+   * headings of @p level '#' (nested ones one level deeper): the reference
+   * that `compax docs` writes, from the same declarations as
+   * --print-parameters.
+   */
+  void
+  write_parameters_markdown(const dealii::ParameterHandler &prm,
+                            int                             level,
+                            std::ostream                   &out);
+
   void
   print_documented_parameters(const dealii::ParameterHandler &prm,
                               std::ostream                   &out);

@@ -1,5 +1,7 @@
 #include "dem/die/jamming_study.h"
 
+#include "dem/analysis/jamming_fit.h"
+
 #include <chrono>
 #include <cmath>
 #include <ostream>
@@ -23,22 +25,12 @@ namespace compax::dem
   fit_jamming(const std::vector<DieRecord> &records,
               const double                  pressure_resolution)
   {
-    std::vector<double> rho, Z;
-    for (const DieRecord &r : jammed_compaction(records, pressure_resolution))
-      {
-        rho.push_back(r.relative_density);
-        Z.push_back(r.coordination_number);
-      }
-    if (rho.size() < 5)
-      return std::nullopt;
-    try
-      {
-        return fit_coordination(rho, Z);
-      }
-    catch (const std::exception &)
-      {
-        return std::nullopt;
-      }
+    std::vector<CompactionState> states;
+    for (const DieRecord &r : records)
+      if (r.stage == "compaction" && r.step > 0)
+        states.push_back(
+          {r.relative_density, r.upper_punch_pressure, r.coordination_number});
+    return fit_jamming(states, pressure_resolution);
   }
 
   std::string
