@@ -83,10 +83,20 @@ namespace compax::fem
         if (!(d[i] >= 0.0) || !(tan_beta[i] > 0.0) || !(R[i] > 0.0)
             || !(E[i] > 0.0) || !(nu[i] > -1.0 && nu[i] < 0.5)
             || !(std::exp(log_pb[i]) > 0.0))
-          throw std::invalid_argument(
-            "DPC table: need cohesion >= 0, friction angle in (0, 90) deg, "
-            "cap eccentricity > 0, cap pressure > 0, E > 0, nu in (-1, 0.5)"
-            + row);
+          {
+            // Name the values: a NaN E or nu is an RVE branch that was not
+            // jammed (a loose cell has no elastic moduli).
+            std::ostringstream values;
+            values << " (row " << i + 1 << ": relative density " << rho[i]
+                   << ", cohesion " << d[i] << " Pa, tan beta " << tan_beta[i]
+                   << ", R " << R[i] << ", E " << E[i] << " Pa, nu " << nu[i]
+                   << ", p_b " << std::exp(log_pb[i])
+                   << " Pa; NaN moduli come from an unjammed RVE branch)";
+            throw std::invalid_argument(
+              "DPC table: need cohesion >= 0, friction angle in (0, 90) deg, "
+              "cap eccentricity > 0, cap pressure > 0, E > 0, nu in (-1, 0.5)"
+              + values.str());
+          }
       }
   }
 

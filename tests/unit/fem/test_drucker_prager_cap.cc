@@ -174,3 +174,24 @@ TEST(DruckerPragerCap, TrialEvaluationsLeaveCommittedHistoryUntouched)
   const double J = (1 + e[0][0]) * (1 + e[1][1]) * (1 + e[2][2]);
   EXPECT_NEAR(next[6], 0.6 / J, 1e-14);
 }
+
+// A row of an unjammed RVE branch has no moduli (NaN): the table refuses
+// it, naming the row's density and the values that are out of range.
+TEST(DpcTable, RowWithNanModuliIsRefusedWithItsValues)
+{
+  fem::DpcTable table;
+  table.add_row(0.6, 0.0, 40.0, 0.5, 1e5, std::nan(""), std::nan(""));
+  table.add_row(0.8, 1e5, 40.0, 0.5, 1e7, 1e9, 0.25);
+  try
+    {
+      table.validate();
+      FAIL() << "a NaN Young's modulus was accepted";
+    }
+  catch (const std::invalid_argument &e)
+    {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("row 1: relative density 0.6"), std::string::npos)
+        << what;
+      EXPECT_NE(what.find("E nan Pa"), std::string::npos) << what;
+    }
+}
