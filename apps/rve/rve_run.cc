@@ -221,9 +221,7 @@ namespace compax::cli
       std::ofstream out(file);
       out << "rho_c_Z,Z_c,Z_0,theta,rms,jammed_states\n"
           << std::setprecision(12);
-      std::size_t jammed = 0;
-      for (const dem::CompactionState &s : states)
-        jammed += s.coordination_number > 0.0 && s.axial_pressure > resolution;
+      const std::size_t jammed = dem::jammed_states(states, resolution).size();
       if (fit)
         out << fit->rho_c << ',' << fit->Z_c << ',' << fit->Z_0 << ','
             << fit->theta << ',' << fit->rms << ',' << jammed << '\n';

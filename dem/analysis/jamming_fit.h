@@ -24,11 +24,16 @@ namespace compax::dem
     double coordination_number = 0.0;
   };
 
+  /// The jammed ones of @p states: axial pressure above
+  /// @p pressure_resolution [Pa] and a positive Z.
+  std::vector<CompactionState>
+  jammed_states(const std::vector<CompactionState> &states,
+                double                              pressure_resolution);
+
   /**
-   * Eq. (14), Z = Z_c + Z_0 (rho - rho_c_Z)^theta, fitted to the jammed
-   * states: those whose axial pressure exceeds @p pressure_resolution [Pa]
-   * and whose Z is positive (below it the bed carries nothing the contact
-   * law resolves). Empty with fewer than five jammed states or when the
+   * Eq. (14), Z = Z_c + Z_0 (rho - rho_c_Z)^theta, fitted to the
+   * jammed_states() (below the resolution the bed carries nothing the
+   * contact law resolves). Empty with fewer than five jammed states or when the
    * fit fails.
    */
   std::optional<CoordinationFit>
