@@ -271,7 +271,7 @@ namespace compax::cli
       "Unjammed equilibrium",
       "balanced-relaxation",
       dealii::Patterns::Selection(
-        "relaxation|relaxation+newton|balanced-relaxation"),
+        "relaxation|relaxation+newton|balanced-relaxation|balanced-lbfgs"),
       "Bonded path (Consolidation = none) only: the converged state of a "
       "step while the punches carry less than 0.5 MPa. relaxation: the FIRE "
       "relaxation at fixed internal variables, balanced to 1e-2 of the mean "
@@ -286,7 +286,10 @@ namespace compax::cli
       "1e-6 of a particle's share of 0.5 MPa) within 2e5 FIRE iterations, "
       "else the step is cut back: loose states balance as tightly as "
       "jammed ones, and it passes the jamming onset of the 6512-sphere "
-      "beds where Newton's overlap-scale steps crawl.");
+      "beds where Newton's overlap-scale steps crawl. balanced-lbfgs: the "
+      "same problem and tolerances, minimised by L-BFGS instead of FIRE "
+      "(3.6x fewer residual evaluations to rho = 0.70 on the 6512-sphere "
+      "Material 1 bed, 1.7x on 2000 spheres; see README).");
     prm.declare_entry("Maximum ejection steps",
                       "40",
                       dealii::Patterns::Integer(1, 100000),

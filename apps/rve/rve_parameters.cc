@@ -354,7 +354,7 @@ namespace compax::cli
       "Unjammed equilibrium",
       "balanced-relaxation",
       dealii::Patterns::Selection(
-        "relaxation|relaxation+newton|balanced-relaxation"),
+        "relaxation|relaxation+newton|balanced-relaxation|balanced-lbfgs"),
       "Consolidation = none only (as compax die's Protocol/Unjammed "
       "equilibrium): the converged state of a step below the Jamming "
       "pressure. relaxation: the FIRE relaxation. relaxation+newton: the "
@@ -363,7 +363,8 @@ namespace compax::cli
       "step whose Newton fails is cut back). balanced-relaxation: the "
       "relaxation itself run to the Solver tolerances (or every net force "
       "below 1e-6 of a particle's share of the Jamming pressure) within "
-      "2e5 FIRE iterations, else the step is cut back. The last two balance "
+      "2e5 FIRE iterations, else the step is cut back. balanced-lbfgs: the "
+      "same, minimised by L-BFGS instead of FIRE. The last three balance "
       "loose states as tightly as jammed ones.");
     prm.leave_subsection();
   }

@@ -80,18 +80,25 @@ namespace compax::dem
         // A balanced relaxation stops where Newton would: at the relative
         // force tolerance, or below the floor at which a loose cell counts
         // as force-free.
-        const bool balanced = !frozen
-                              && opts.unjammed_equilibrium
-                                   == UnjammedEquilibrium::balanced_relaxation;
-        const FireResult f = balanced
-                               ? fire.relax(system,
-                                            opts.equilibrium.force_tolerance,
-                                            opts.balanced_iterations,
-                                            balanced_force_floor(bed))
-                               : fire.relax(system,
-                                            opts.fire_tolerance,
-                                            opts.fire_iterations,
-                                            resolution);
+        const UnjammedEquilibrium u = opts.unjammed_equilibrium;
+        const bool                lbfgs_minimiser
+          = !frozen && u == UnjammedEquilibrium::balanced_lbfgs;
+        const bool balanced
+          = lbfgs_minimiser
+            || (!frozen && u == UnjammedEquilibrium::balanced_relaxation);
+        const FireResult f
+          = lbfgs_minimiser ? lbfgs.relax(system,
+                                          opts.equilibrium.force_tolerance,
+                                          opts.balanced_iterations,
+                                          balanced_force_floor(bed))
+            : balanced      ? fire.relax(system,
+                                    opts.equilibrium.force_tolerance,
+                                    opts.balanced_iterations,
+                                    balanced_force_floor(bed))
+                            : fire.relax(system,
+                                    opts.fire_tolerance,
+                                    opts.fire_iterations,
+                                    resolution);
         total.relaxation_iterations += f.iterations;
         total.relative_residual = f.relative_residual;
         if (frozen)

@@ -3,6 +3,7 @@
 #include "dem/rve/periodic_assembler.h"
 #include "dem/rve/periodic_bed.h"
 #include "dem/solver/fire_relaxation.h"
+#include "dem/solver/lbfgs_relaxation.h"
 #include "dem/solver/load_stepper.h"
 #include "dem/solver/trust_region_newton.h"
 #include "dem/solver/unjammed_equilibrium.h"
@@ -53,7 +54,8 @@ namespace compax::dem
     /// hands its state to Newton too), or the relaxation run to the
     /// equilibrium options' force tolerance, or below force_tolerance times
     /// a particle's share of the jamming pressure, within
-    /// balanced_iterations (balanced_relaxation).
+    /// balanced_iterations (balanced_relaxation; balanced_lbfgs minimises
+    /// by L-BFGS instead of FIRE).
     UnjammedEquilibrium unjammed_equilibrium
       = UnjammedEquilibrium::balanced_relaxation;
     /// FIRE iterations allowed per balanced relaxation.
@@ -180,6 +182,7 @@ namespace compax::dem
     PeriodicAssembler   assembler;
     TrustRegionNewton   newton;
     FireRelaxation      fire;
+    LbfgsRelaxation     lbfgs;
     PeriodicBed         saved;
     double              fraction = 1.0;
     /// Bonded path: whether the cell is still unjammed; -1: not known yet.

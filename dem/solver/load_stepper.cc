@@ -84,20 +84,29 @@ namespace compax::dem
       return UnjammedStep::newton;
     // A balanced relaxation stops where Newton would: at the relative force
     // tolerance or below the absolute force floor.
-    const bool balanced = stepping.unjammed_equilibrium
-                          == UnjammedEquilibrium::balanced_relaxation;
+    const bool lbfgs_minimiser
+      = stepping.unjammed_equilibrium == UnjammedEquilibrium::balanced_lbfgs;
+    const bool balanced = lbfgs_minimiser
+                          || stepping.unjammed_equilibrium
+                               == UnjammedEquilibrium::balanced_relaxation;
     const EquilibriumOptions &eq = newton.options();
     const auto                t0 = std::chrono::steady_clock::now();
-    const FireResult          f  = balanced ? fire.relax(bed,
-                                               model,
-                                               eq.force_tolerance,
-                                               stepping.balanced_iterations,
-                                               eq.force_floor)
-                                            : fire.relax(bed,
-                                               model,
-                                               stepping.unjammed_tolerance,
-                                               stepping.unjammed_iterations,
-                                               stepping.force_resolution);
+    const FireResult          f  = lbfgs_minimiser
+                                     ? lbfgs.relax(bed,
+                                         model,
+                                         eq.force_tolerance,
+                                         stepping.balanced_iterations,
+                                         eq.force_floor)
+                                   : balanced ? fire.relax(bed,
+                                                 model,
+                                                 eq.force_tolerance,
+                                                 stepping.balanced_iterations,
+                                                 eq.force_floor)
+                                              : fire.relax(bed,
+                                                 model,
+                                                 stepping.unjammed_tolerance,
+                                                 stepping.unjammed_iterations,
+                                                 stepping.force_resolution);
     total.fire_seconds
       += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
            .count();

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "dem/solver/bed.h"
+#include "dem/solver/lbfgs_relaxation.h"
 #include "dem/solver/trust_region_newton.h"
 #include "dem/solver/unjammed_equilibrium.h"
 
@@ -178,6 +179,7 @@ namespace compax::dem
     const ContactModel &model;
     TrustRegionNewton   newton;
     FireRelaxation      fire;
+    LbfgsRelaxation     lbfgs;
     LoadSteppingOptions stepping;
     double              fraction = 1.0;
     /// Whether the bed is still unjammed; -1: not known yet.

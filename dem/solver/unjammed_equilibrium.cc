@@ -15,6 +15,8 @@ namespace compax::dem
           return "relaxation+newton";
         case UnjammedEquilibrium::balanced_relaxation:
           return "balanced-relaxation";
+        case UnjammedEquilibrium::balanced_lbfgs:
+          return "balanced-lbfgs";
       }
     return "relaxation";
   }
@@ -24,11 +26,13 @@ namespace compax::dem
   {
     for (const auto e : {UnjammedEquilibrium::relaxation,
                          UnjammedEquilibrium::relaxation_then_newton,
-                         UnjammedEquilibrium::balanced_relaxation})
+                         UnjammedEquilibrium::balanced_relaxation,
+                         UnjammedEquilibrium::balanced_lbfgs})
       if (unjammed_equilibrium_name(e) == name)
         return e;
     throw std::invalid_argument(
       "unjammed equilibrium '" + name
-      + "' is not one of relaxation, relaxation+newton, balanced-relaxation");
+      + "' is not one of relaxation, relaxation+newton, balanced-relaxation, "
+        "balanced-lbfgs");
   }
 } // namespace compax::dem

@@ -29,10 +29,15 @@ namespace compax::dem
     /// the jamming onset the bed sits on saddles whose negative curvature
     /// lives on the scale of the overlaps, where Newton's quadratic model
     /// fails for steps a rearrangement needs; FIRE's inertia does not.
-    balanced_relaxation
+    balanced_relaxation,
+    /// As balanced_relaxation, with the relaxation done by L-BFGS
+    /// (LbfgsRelaxation) instead of FIRE: the same fixed-history problem
+    /// and the same tolerances, another minimiser.
+    balanced_lbfgs
   };
 
-  /// "relaxation", "relaxation+newton" or "balanced-relaxation".
+  /// "relaxation", "relaxation+newton", "balanced-relaxation" or
+  /// "balanced-lbfgs".
   std::string
   unjammed_equilibrium_name(UnjammedEquilibrium e);
 

@@ -196,3 +196,11 @@ TEST(DieProtocol, BalancedRelaxationBalancesLooseStatesToTheSolverTolerance)
        expect_loose_states_balanced(UnjammedEquilibrium::balanced_relaxation))
     EXPECT_EQ(relaxed, 1);
 }
+
+/// The same with L-BFGS as the minimiser of the balanced relaxation.
+TEST(DieProtocol, BalancedLbfgsBalancesLooseStatesToTheSolverTolerance)
+{
+  for (const int relaxed :
+       expect_loose_states_balanced(UnjammedEquilibrium::balanced_lbfgs))
+    EXPECT_EQ(relaxed, 1);
+}

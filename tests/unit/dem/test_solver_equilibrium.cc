@@ -1,3 +1,4 @@
+#include "dem/solver/lbfgs_relaxation.h"
 #include "dem/solver/load_stepper.h"
 #include "tests/support/gonzalez_material1.h"
 
@@ -189,4 +190,49 @@ TEST(SolverEquilibrium, SimpleCubicColumnAndRattler)
                                   rattler[2] * w.height() / (2 * R * N));
       EXPECT_LT((bed.particles.positions[N] - moved).norm(), 1e-12 * R);
     }
+}
+
+/// L-BFGS at fixed (virgin) internal variables relaxes a column of spheres
+/// squeezed between punches to the closed form: one force P through every
+/// contact in series, 2 gamma_sf(P) + (N-1) gamma_ss(P) = total squeeze,
+/// each contact on the plastic loading curve; the rattler beside the
+/// column, without a contact, does not move. The column starts
+/// unrelaxed: the whole squeeze sits in the top contact.
+TEST(SolverEquilibrium, LbfgsRelaxesAColumnToTheClosedForm)
+{
+  const ContactModel model = compax::testing::material1::contact_model();
+  const int          N     = 6;
+  const double       total = 0.2 * R;
+  Bed                bed;
+  bed.walls.diameter    = 12 * R;
+  bed.walls.upper_punch = 2 * R * N - total;
+  bed.contacts.set_skin(0.3 * R);
+  for (int k = 0; k < N; ++k)
+    bed.particles.add({0.0, 0.0, R + 2 * R * k}, R);
+  const Eigen::Vector3d rattler(4 * R, 0.0, 3 * R);
+  bed.particles.add(rattler, R);
+
+  LbfgsRelaxation  lbfgs;
+  const double     tolerance = 1e-9;
+  const FireResult r         = lbfgs.relax(bed, model, tolerance, 100000);
+  ASSERT_TRUE(r.converged) << r.iterations << " evaluations, residual "
+                           << r.relative_residual;
+  double lo = 0.0, hi = sphere_flat.force(total);
+  for (int i = 0; i < 200; ++i)
+    {
+      const double P = 0.5 * (lo + hi);
+      (2 * sphere_flat.overlap(P) + (N - 1) * sphere_sphere.overlap(P) < total
+         ? lo
+         : hi)
+        = P;
+    }
+  const double P = 0.5 * (lo + hi);
+  ContactSums  sums;
+  EXPECT_LT(net_force_check(bed, model, sums), tolerance);
+  EXPECT_NEAR(sums.wall_force[int(Wall::upper_punch)], P, 1e-7 * P);
+  EXPECT_NEAR(sums.wall_force[int(Wall::lower_punch)], P, 1e-7 * P);
+  EXPECT_NEAR(bed.particles.positions[0][2],
+              R - sphere_flat.overlap(P),
+              1e-8 * R);
+  EXPECT_EQ(bed.particles.positions[N], rattler);
 }

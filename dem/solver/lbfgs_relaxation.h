@@ -1,0 +1,91 @@
+#pragma once
+
+#include "dem/solver/bed.h"
+#include "dem/solver/block_sparse_matrix.h"
+#include "dem/solver/contact_assembler.h"
+#include "dem/solver/equilibrium_system.h"
+#include "dem/solver/fire_relaxation.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace compax::dem
+{
+  /**
+   * Limited-memory BFGS minimisation (Nocedal 1980; Nocedal & Wright 2006,
+   * Alg. 7.4) of a bed's stored energy at fixed walls and internal
+   * variables: the same problem FireRelaxation solves, by a different
+   * minimiser. With the histories fixed each contact force is a function
+   * of its own overlap, so the residual F is the gradient of an energy
+   * and the converged states of both minimisers balance the same forces to
+   * the same tolerance.
+   *
+   * Why a second minimiser: near the jamming onset the slowest mode of a
+   * loose bed softens, and FIRE, whose convergence rate is set by the
+   * ratio of the stiffest to the softest mode, needs up to 1e5
+   * iterations per load step. L-BFGS builds a curvature model of the
+   * soft subspace from the last few steps and moves along it in a few
+   * line searches.
+   *
+   * Only forces are available (no energy), so the line search brackets a
+   * zero of the directional derivative g(x + a d).d and accepts a step that
+   * satisfies the strong Wolfe curvature condition |g(a).d| <= 0.9
+   * |g(0).d| with g(a).d <= 0 or after a bracketing secant (Illinois)
+   * refinement. The initial inverse Hessian is the block-diagonal
+   * preconditioner FIRE uses as its inverse masses (each particle's
+   * largest diagonal stiffness), scaled by s.y / y.M^-1 y. No particle
+   * moves more than the Verlet skin per trial point. Buffers are kept,
+   * so repeated relaxations allocate nothing.
+   */
+  class LbfgsRelaxation
+  {
+  public:
+    /// @param memory Number of correction pairs kept (m in Nocedal & Wright).
+    explicit LbfgsRelaxation(int memory = 10);
+
+    /**
+     * Minimises until max_i |F_i| <= target_relative_residual times the
+     * mean contact force, or max_i |F_i| <= force_floor [N], or until
+     * max_evaluations residual evaluations (FireResult::iterations counts
+     * residual evaluations, the cost unit FIRE's budget counts too).
+     */
+    FireResult
+    relax(EquilibriumSystem &system,
+          double             target_relative_residual,
+          int                max_evaluations,
+          double             force_floor = 0.0);
+
+    /// The same for a die bed.
+    FireResult
+    relax(Bed                &bed,
+          const ContactModel &model,
+          double              target_relative_residual,
+          int                 max_evaluations,
+          double              force_floor = 0.0);
+
+  private:
+    /// Refreshes the preconditioner from the diagonal stiffness at x.
+    void
+    update_preconditioner(EquilibriumSystem &system);
+
+    /// d = -H g by the two-loop recursion over the stored pairs.
+    void
+    search_direction();
+
+    /// Stores the pair (s, y) if its curvature s.y is positive.
+    void
+    remember(const Eigen::VectorXd &s, const Eigen::VectorXd &y);
+
+    int                          memory;
+    std::vector<Eigen::VectorXd> s_history, y_history;
+    std::vector<double>          rho, alpha;
+    int                          n_stored = 0, newest = -1;
+    double                       scaling = 1.0;
+
+    ContactAssembler  assembler;
+    BlockSparseMatrix K;
+    Eigen::VectorXd   g, g_trial, d, x0, s, y, inverse_diagonal;
+    ContactSums       sums;
+  };
+} // namespace compax::dem
