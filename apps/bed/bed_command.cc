@@ -6,6 +6,7 @@
 #include "apps/common/gnuplot.h"
 #include "dem/nonlocal/square_die_compaction.h"
 #include "dem/nonlocal/square_die_deposition.h"
+#include "dem/wall_clock.h"
 
 #include <algorithm>
 #include <chrono>
@@ -453,10 +454,8 @@ namespace compax::cli
             const auto t0 = std::chrono::steady_clock::now();
             results[f]    = dem::compact_square_die_bed(
               p, materials, die, f == "nonlocal", s.compaction, &std::cout);
-            const double seconds = std::chrono::duration<double>(
-                                     std::chrono::steady_clock::now() - t0)
-                                     .count();
-            const auto &r = results[f];
+            const double seconds = dem::seconds_since(t0);
+            const auto  &r       = results[f];
             for (const auto &pt : r.points)
               {
                 csv << f << pt.relative_density << pt.height;
@@ -625,11 +624,8 @@ namespace compax::cli
                 x = x0 * (1.0 + 1e-9 * (r % 2));
                 system.residual(F);
               }
-            const double t = std::chrono::duration<double>(
-                               std::chrono::steady_clock::now() - t0)
-                               .count()
-                             / s.benchmark_repetitions;
-            x                 = x0;
+            const double t = dem::seconds_since(t0) / s.benchmark_repetitions;
+            x              = x0;
             const double warm = double(system.total_sweeps() - sweeps0)
                                 / s.benchmark_repetitions;
             if (!nonlocal)

@@ -10,6 +10,7 @@
 #include "coupling/die_checkpoint.h"
 #include "coupling/die_state_archive.h"
 #include "dem/die/die_study.h"
+#include "dem/wall_clock.h"
 
 #include <chrono>
 #include <fstream>
@@ -150,9 +151,7 @@ namespace compax::cli
     report_solver(const dem::DieSolverTotals                 &t,
                   const std::chrono::steady_clock::time_point started)
     {
-      const double seconds = std::chrono::duration<double>(
-                               std::chrono::steady_clock::now() - started)
-                               .count();
+      const double seconds = dem::seconds_since(started);
       std::cout << std::defaultfloat << std::setprecision(4)
                 << "Solver: " << t.newton_iterations << " Newton iterations ("
                 << t.cg_iterations << " CG), " << t.fire_iterations
