@@ -1,8 +1,8 @@
 #pragma once
 
-#include "apps/common/csv_writer.h"
 #include "coupling/die_checkpoint.h"
 #include "dem/solver/bed.h"
+#include "io/csv_writer.h"
 
 #include <filesystem>
 #include <string>
@@ -59,8 +59,8 @@ namespace compax::cli
 
     std::filesystem::path                       folder;
     std::string                                 state_parameters;
-    CsvWriter                                   fabric;
-    CsvWriter                                   histograms;
+    io::CsvWriter                               fabric;
+    io::CsvWriter                               histograms;
     coupling::DieBranchFiles                    written;
     std::vector<std::pair<double, std::string>> snapshots;
   };

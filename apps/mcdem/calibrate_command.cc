@@ -2,12 +2,12 @@
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
-#include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
 #include "apps/mcdem/mcdem_parameters.h"
 #include "apps/mcdem/mcdem_progress.h"
 #include "dem/dynamics/calibration.h"
 #include "io/csv_table.h"
+#include "io/csv_writer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -263,7 +263,7 @@ namespace compax::cli
         std::cout << "Fitting on " << prepared.dem().particles().size()
                   << " particles (seed " << setup.rve.seed << ")\n";
 
-        CsvWriter history(
+        io::CsvWriter history(
           folder / "calibration.csv",
           {"simulation", "k2_over_k1", "kc_over_k1", "beta", "r2"});
         int        count  = 0;
@@ -304,9 +304,9 @@ namespace compax::cli
               << "end\n";
         }
         {
-          const auto y = dem::simulated_at(measured, result.best_curve);
-          CsvWriter  fit(folder / "calibration_fit.csv",
-                        {"strain", "stage", "measured", "simulated"});
+          const auto    y = dem::simulated_at(measured, result.best_curve);
+          io::CsvWriter fit(folder / "calibration_fit.csv",
+                            {"strain", "stage", "measured", "simulated"});
           for (std::size_t k = 0; k < y.size(); ++k)
             {
               fit << measured.strain[k] << measured.stage[k]
