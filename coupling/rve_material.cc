@@ -2,6 +2,7 @@
 
 #include "dem/rve/periodic_bed_system.h"
 #include "dem/rve/rve_packing.h"
+#include "dem/wall_clock.h"
 #include "fem/isotropic_elasticity.h"
 
 #include <chrono>
@@ -39,13 +40,7 @@ namespace compax::coupling
       return m;
     }
 
-    double
-    seconds_since(const std::chrono::steady_clock::time_point &start)
-    {
-      return std::chrono::duration<double>(std::chrono::steady_clock::now()
-                                           - start)
-        .count();
-    }
+    using dem::seconds_since;
 
     dealii::SymmetricTensor<2, 3>
     from_eigen(const Eigen::Matrix3d &m)

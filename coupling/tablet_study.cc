@@ -2,6 +2,7 @@
 
 #include "coupling/rve_material.h"
 #include "coupling/tablet_checkpoint.h"
+#include "dem/wall_clock.h"
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/utilities.h>
@@ -359,12 +360,8 @@ namespace compax::coupling
       result.resumed_after = resume();
 
     const auto start   = std::chrono::steady_clock::now();
-    const auto seconds = [&] {
-      return std::chrono::duration<double>(std::chrono::steady_clock::now()
-                                           - start)
-        .count();
-    };
-    const auto step = [&](const fem::TabletStep &st) {
+    const auto seconds = [&] { return dem::seconds_since(start); };
+    const auto step    = [&](const fem::TabletStep &st) {
       // Fields at the end of each stage (the step before a new one) and
       // every field interval.
       if (st.stage != previous && last.index != last_written)
@@ -382,7 +379,7 @@ namespace compax::coupling
           p.elapsed                    = seconds();
           const unsigned int done_here = st.index - result.resumed_after;
           p.left = done_here > 0 ? p.elapsed * (n_steps - st.index) / done_here
-                                 : 0.0;
+                                    : 0.0;
           on_step(p);
         }
       if (st.index % options.field_interval == 0)

@@ -1,10 +1,11 @@
 #include "fem/dpc_table.h"
 
+#include "io/csv_table.h"
+
 #include <deal.II/base/numbers.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -103,44 +104,23 @@ namespace compax::fem
   DpcTable
   DpcTable::read_csv(const std::filesystem::path &file)
   {
-    std::ifstream in(file);
-    if (!in)
-      throw std::runtime_error("DPC table '" + file.string()
-                               + "': cannot be opened");
-    std::string line;
-    std::getline(in, line);
-    DpcTable    table;
-    std::size_t number = 1;
-    while (std::getline(in, line))
-      {
-        ++number;
-        if (line.find_first_not_of(" \t\r") == std::string::npos
-            || line[0] == '#')
-          continue;
-        std::stringstream   cells(line);
-        std::vector<double> v;
-        for (std::string cell; std::getline(cells, cell, ',');)
-          {
-            try
-              {
-                v.push_back(std::stod(cell));
-              }
-            catch (const std::exception &)
-              {
-                throw std::runtime_error("DPC table '" + file.string()
-                                         + "', line " + std::to_string(number)
-                                         + ": '" + cell + "' is no number");
-              }
-          }
-        if (v.size() != columns().size())
-          throw std::runtime_error(
-            "DPC table '" + file.string() + "', line " + std::to_string(number)
-            + ": expected " + std::to_string(columns().size()) + " columns");
-        table.add_row(v[0], v[1], v[2], v[3], v[4], v[5], v[6]);
-      }
+    DpcTable table;
     try
       {
+        // By column name: any order, further columns ignored.
+        const io::CsvTable               csv = io::CsvTable::read(file);
+        std::vector<std::vector<double>> v;
+        for (const auto &name : columns())
+          v.push_back(csv.numbers(name));
+        for (std::size_t r = 0; r < csv.rows(); ++r)
+          table.add_row(
+            v[0][r], v[1][r], v[2][r], v[3][r], v[4][r], v[5][r], v[6][r]);
         table.validate();
+      }
+    catch (const io::CsvError &e)
+      {
+        throw std::runtime_error("DPC table '" + file.string()
+                                 + "': " + e.reason());
       }
     catch (const std::invalid_argument &e)
       {

@@ -33,9 +33,10 @@ namespace compax::fem
     static const std::vector<std::string> &
     columns();
 
-    /// Reads a CSV file with the header columns(); friction angle in
-    /// degrees, stresses and moduli in Pa. Throws std::runtime_error naming
-    /// the file and line on malformed input.
+    /// Reads a CSV file with (at least) the columns(), in any order;
+    /// friction angle in degrees, stresses and moduli in Pa. Throws
+    /// std::runtime_error naming the file, and the line and column of a
+    /// malformed cell, on bad input.
     static DpcTable
     read_csv(const std::filesystem::path &file);
 

@@ -2,10 +2,11 @@
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
-#include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
 #include "dem/nonlocal/square_die_compaction.h"
 #include "dem/nonlocal/square_die_deposition.h"
+#include "dem/wall_clock.h"
+#include "io/csv_writer.h"
 
 #include <algorithm>
 #include <chrono>
@@ -402,8 +403,8 @@ namespace compax::cli
           s.material[0].elastic, s.material[1].elastic};
         const dem::ParticleSystem p = deposit(s, s.width, s.n_particles);
         {
-          CsvWriter csv(folder / "particles.csv",
-                        {"x", "y", "z", "radius", "material"});
+          io::CsvWriter csv(folder / "particles.csv",
+                            {"x", "y", "z", "radius", "material"});
           for (std::size_t i = 0; i < p.size(); ++i)
             csv << p.positions[i][0] << p.positions[i][1] << p.positions[i][2]
                 << p.radii[i] << static_cast<int>(p.materials[i] + 1),
@@ -424,8 +425,8 @@ namespace compax::cli
                   << p.solid_volume() / die.enclosed_volume() << '\n';
 
         std::map<std::string, dem::BedCompactionResult> results;
-        CsvWriter                                       csv(folder / "bed.csv",
-                      {"formulation",
+        io::CsvWriter                                   csv(folder / "bed.csv",
+                          {"formulation",
                                                              "relative_density",
                                                              "height",
                                                              "upper_punch",
@@ -445,18 +446,16 @@ namespace compax::cli
                                                              "relative_residual"});
         // The time of each formulation's run (kept out of bed.csv, so that
         // two runs of one input give the same file).
-        CsvWriter timing(folder / "timing.csv", {"formulation", "seconds"});
-        int       status = success;
+        io::CsvWriter timing(folder / "timing.csv", {"formulation", "seconds"});
+        int           status = success;
         for (const auto &f : s.formulations)
           {
             std::cout << f << ":\n";
             const auto t0 = std::chrono::steady_clock::now();
             results[f]    = dem::compact_square_die_bed(
               p, materials, die, f == "nonlocal", s.compaction, &std::cout);
-            const double seconds = std::chrono::duration<double>(
-                                     std::chrono::steady_clock::now() - t0)
-                                     .count();
-            const auto &r = results[f];
+            const double seconds = dem::seconds_since(t0);
+            const auto  &r       = results[f];
             for (const auto &pt : r.points)
               {
                 csv << f << pt.relative_density << pt.height;
@@ -505,17 +504,17 @@ namespace compax::cli
       {
         if (!results.count("hertz") || !results.count("nonlocal"))
           return;
-        const auto &h = results.at("hertz").points;
-        const auto &n = results.at("nonlocal").points;
-        CsvWriter   csv(folder / "discrepancy.csv",
-                      {"relative_density",
-                         "hertz_load",
-                         "nonlocal_load",
-                         "load_discrepancy",
-                         "hertz_lateral",
-                         "nonlocal_lateral",
-                         "lateral_discrepancy"});
-        double      worst = 0.0, at = 0.0;
+        const auto   &h = results.at("hertz").points;
+        const auto   &n = results.at("nonlocal").points;
+        io::CsvWriter csv(folder / "discrepancy.csv",
+                          {"relative_density",
+                           "hertz_load",
+                           "nonlocal_load",
+                           "load_discrepancy",
+                           "hertz_lateral",
+                           "nonlocal_lateral",
+                           "lateral_discrepancy"});
+        double        worst = 0.0, at = 0.0;
         for (const auto &a : h)
           for (const auto &b : n)
             if (std::abs(a.relative_density - b.relative_density)
@@ -597,16 +596,16 @@ namespace compax::cli
           x[2] *= 0.98;
         die.upper_punch_height *= 0.98;
 
-        CsvWriter csv(folder / "benchmark.csv",
-                      {"formulation",
-                       "particles",
-                       "candidates",
-                       "loaded",
-                       "incidences",
-                       "sweeps_cold",
-                       "sweeps_warm",
-                       "seconds_per_residual"});
-        double    hertz_time = 0.0;
+        io::CsvWriter csv(folder / "benchmark.csv",
+                          {"formulation",
+                           "particles",
+                           "candidates",
+                           "loaded",
+                           "incidences",
+                           "sweeps_cold",
+                           "sweeps_warm",
+                           "seconds_per_residual"});
+        double        hertz_time = 0.0;
         for (const bool nonlocal : {false, true})
           {
             dem::NonlocalBedOptions o;
@@ -625,11 +624,8 @@ namespace compax::cli
                 x = x0 * (1.0 + 1e-9 * (r % 2));
                 system.residual(F);
               }
-            const double t = std::chrono::duration<double>(
-                               std::chrono::steady_clock::now() - t0)
-                               .count()
-                             / s.benchmark_repetitions;
-            x                 = x0;
+            const double t = dem::seconds_since(t0) / s.benchmark_repetitions;
+            x              = x0;
             const double warm = double(system.total_sweeps() - sweeps0)
                                 / s.benchmark_repetitions;
             if (!nonlocal)

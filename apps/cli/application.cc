@@ -149,6 +149,18 @@ namespace compax::cli
                                                                          1);
     }
 
+    /**
+     * Whether this process reports an internal error: under mpirun every
+     * rank meets the same one, so rank 0 alone says it (each rank still
+     * exits non-zero); without MPI, the one process.
+     */
+    bool
+    reports_internal_errors()
+    {
+      return !dealii::Utilities::MPI::job_supports_mpi()
+             || dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    }
+
     int
     run_command(const Command                  &command,
                 const std::vector<std::string> &words,
@@ -275,12 +287,14 @@ namespace compax::cli
       {
         std::ostringstream info;
         e.print_info(info);
-        std::cerr << context << ": internal error: " << info.str() << '\n';
+        if (reports_internal_errors())
+          std::cerr << context << ": internal error: " << info.str() << '\n';
         return failure;
       }
     catch (const std::exception &e)
       {
-        std::cerr << context << ": internal error: " << e.what() << '\n';
+        if (reports_internal_errors())
+          std::cerr << context << ": internal error: " << e.what() << '\n';
         return failure;
       }
   }

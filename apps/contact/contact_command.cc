@@ -2,11 +2,11 @@
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
-#include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
 #include "apps/common/material_parameters.h"
 #include "apps/contact/contact_pair.h"
 #include "apps/contact/overlap_path.h"
+#include "io/csv_writer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -87,8 +87,8 @@ namespace compax::cli
       {
         const ContactPair         pair = make_contact_pair(prm);
         const std::vector<double> path = get_overlap_path(prm);
-        CsvWriter                 csv(folder / "contact.csv",
-                      {"step",
+        io::CsvWriter             csv(folder / "contact.csv",
+                          {"step",
                                        "gamma",
                                        "force",
                                        "contact_radius",

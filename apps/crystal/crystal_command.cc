@@ -2,9 +2,9 @@
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
-#include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
 #include "dem/crystals/crystal_compaction.h"
+#include "io/csv_writer.h"
 
 #include <deal.II/base/utilities.h>
 
@@ -127,7 +127,7 @@ namespace compax::cli
 
     /// Writes a quantity that may not exist (NaN) as an empty cell.
     void
-    cell(CsvWriter &csv, const double value)
+    cell(io::CsvWriter &csv, const double value)
     {
       if (std::isnan(value))
         csv.empty();
@@ -278,13 +278,13 @@ namespace compax::cli
           const std::filesystem::path &folder) const override
       {
         const CrystalStudy study = read_study(prm);
-        CsvWriter          contacts(folder / "contacts.csv",
-                           {"configuration",
+        io::CsvWriter      contacts(folder / "contacts.csv",
+                               {"configuration",
                                      "formulation",
                                      "nu",
                                      "second_contact_density",
                                      "third_contact_density"});
-        CsvWriter          limits(
+        io::CsvWriter      limits(
           folder / "limits.csv",
           {"configuration", "nu", "limit_strain", "limit_density"});
         for (const auto configuration : study.configurations)
@@ -361,7 +361,7 @@ namespace compax::cli
                   const CrystalConfiguration   configuration,
                   const std::vector<Curves>   &curves)
       {
-        CsvWriter csv(
+        io::CsvWriter csv(
           folder / (dem::crystal_configuration_name(configuration) + ".csv"),
           {"nu",
            "strain",

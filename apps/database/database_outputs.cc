@@ -1,9 +1,9 @@
 #include "apps/database/database_outputs.h"
 
-#include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
 #include "apps/common/voigt_columns.h"
 #include "dem/rve/homogenization.h"
+#include "io/csv_writer.h"
 
 namespace compax::cli
 {
@@ -19,7 +19,7 @@ namespace compax::cli
       for (std::string &column : voigt_columns(tensor))
         columns.push_back(std::move(column));
     columns.insert(columns.end(), {"p", "q"});
-    CsvWriter csv(folder / "database.csv", std::move(columns));
+    io::CsvWriter csv(folder / "database.csv", std::move(columns));
     for (const coupling::DatabaseRow &r : db.rows)
       {
         csv << r.branch << r.path << r.relative_density << r.shear_strain;
@@ -40,7 +40,7 @@ namespace compax::cli
   write_dpc_table(const std::filesystem::path            &folder,
                   const std::vector<coupling::DpcFitRow> &rows)
   {
-    CsvWriter csv(folder / "dpc_table.csv", fem::DpcTable::columns());
+    io::CsvWriter csv(folder / "dpc_table.csv", fem::DpcTable::columns());
     for (const coupling::DpcFitRow &r : rows)
       {
         csv << r.relative_density << r.cohesion << r.friction_angle_deg
@@ -77,17 +77,17 @@ namespace compax::cli
                  const coupling::RveDatabase            &db,
                  const std::vector<coupling::DpcFitRow> &fit)
   {
-    CsvWriter branches(folder / "branches.csv",
-                       {"relative_density",
-                        "unloaded_density",
-                        "youngs_modulus",
-                        "poisson_ratio",
-                        "shear_p",
-                        "shear_q",
-                        "confined_shear_p",
-                        "confined_shear_q",
-                        "plastic_density",
-                        "fitted_cap_pressure"});
+    io::CsvWriter branches(folder / "branches.csv",
+                           {"relative_density",
+                            "unloaded_density",
+                            "youngs_modulus",
+                            "poisson_ratio",
+                            "shear_p",
+                            "shear_q",
+                            "confined_shear_p",
+                            "confined_shear_q",
+                            "plastic_density",
+                            "fitted_cap_pressure"});
     for (std::size_t k = 0; k < db.branches.size(); ++k)
       {
         const coupling::DatabaseBranch &b = db.branches[k];
@@ -108,16 +108,16 @@ namespace compax::cli
   write_validation(const std::filesystem::path                     &folder,
                    const std::vector<coupling::DatabaseComparison> &comparisons)
   {
-    CsvWriter csv(folder / "validation.csv",
-                  {"comparison",
-                   "branch",
-                   "path",
-                   "role",
-                   "relative_density",
-                   "points",
-                   "stress_error",
-                   "p_error",
-                   "q_error"});
+    io::CsvWriter csv(folder / "validation.csv",
+                      {"comparison",
+                       "branch",
+                       "path",
+                       "role",
+                       "relative_density",
+                       "points",
+                       "stress_error",
+                       "p_error",
+                       "q_error"});
     for (const coupling::DatabaseComparison &comparison : comparisons)
       for (const coupling::PathError &e : comparison.errors)
         {
@@ -135,21 +135,21 @@ namespace compax::cli
                         const coupling::RveDatabase &rve,
                         const coupling::RveDatabase &law)
   {
-    CsvWriter csv(folder / "validation_rows.csv",
-                  {"row",
-                   "branch",
-                   "path",
-                   "relative_density",
-                   "p_rve",
-                   "q_rve",
-                   "p_law",
-                   "q_law",
-                   "sigma_xx_rve",
-                   "sigma_xx_law",
-                   "sigma_zz_rve",
-                   "sigma_zz_law",
-                   "sigma_xz_rve",
-                   "sigma_xz_law"});
+    io::CsvWriter csv(folder / "validation_rows.csv",
+                      {"row",
+                       "branch",
+                       "path",
+                       "relative_density",
+                       "p_rve",
+                       "q_rve",
+                       "p_law",
+                       "q_law",
+                       "sigma_xx_rve",
+                       "sigma_xx_law",
+                       "sigma_zz_rve",
+                       "sigma_zz_law",
+                       "sigma_xz_rve",
+                       "sigma_xz_law"});
     for (std::size_t r = 0; r < rve.rows.size(); ++r)
       {
         const auto &a = rve.rows[r], &b = law.rows[r];

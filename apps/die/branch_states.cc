@@ -1,6 +1,7 @@
 #include "apps/die/branch_states.h"
 
-#include "apps/die/bed_checkpoint.h"
+#include "coupling/die_state_archive.h"
+#include "coupling/hdf5_archive.h"
 #include "dem/analysis/bed_statistics.h"
 #include "dem/analysis/fabric.h"
 #include "dem/io/particle_vtu.h"
@@ -12,40 +13,6 @@
 
 namespace compax::cli
 {
-  void
-  save_branch_files(coupling::Hdf5ArchiveWriter &archive,
-                    const std::string           &group,
-                    const BranchFiles           &files)
-  {
-    archive.write_text(group + "/fabric_rows", files.fabric_rows);
-    archive.write_text(group + "/histogram_rows", files.histogram_rows);
-    std::string list;
-    for (const auto &[name, hash] : files.files)
-      list += hash + " " + name + "\n";
-    archive.write_text(group + "/files", list);
-  }
-
-  BranchFiles
-  load_branch_files(const coupling::Hdf5ArchiveReader &archive,
-                    const std::string                 &group)
-  {
-    BranchFiles files;
-    files.fabric_rows    = archive.read_text(group + "/fabric_rows");
-    files.histogram_rows = archive.read_text(group + "/histogram_rows");
-    std::istringstream list(archive.read_text(group + "/files"));
-    for (std::string line; std::getline(list, line);)
-      {
-        const auto        space = line.find(' ');
-        const std::string name
-          = space == std::string::npos ? "" : line.substr(space + 1);
-        if (space != 16 || name.empty() || name.front() == '/'
-            || name.find("..") != std::string::npos)
-          throw std::runtime_error("malformed list of branch files");
-        files.files.emplace_back(name, line.substr(0, space));
-      }
-    return files;
-  }
-
   BranchStateWriter::BranchStateWriter(const std::filesystem::path &folder,
                                        std::string state_parameters)
       : folder(folder)
@@ -84,7 +51,7 @@ namespace compax::cli
     dem::write_pvd(folder / "particles.pvd", snapshots);
   }
 
-  BranchFiles
+  coupling::DieBranchFiles
   BranchStateWriter::so_far()
   {
     fabric.flush();
@@ -93,8 +60,8 @@ namespace compax::cli
   }
 
   void
-  BranchStateWriter::verify(const std::filesystem::path &old_folder,
-                            const BranchFiles           &earlier)
+  BranchStateWriter::verify(const std::filesystem::path    &old_folder,
+                            const coupling::DieBranchFiles &earlier)
   {
     namespace fs = std::filesystem;
     for (const auto &[name, hash] : earlier.files)
@@ -114,8 +81,8 @@ namespace compax::cli
   }
 
   void
-  BranchStateWriter::carry_over(const std::filesystem::path &old_folder,
-                                const BranchFiles           &earlier)
+  BranchStateWriter::carry_over(const std::filesystem::path    &old_folder,
+                                const coupling::DieBranchFiles &earlier)
   {
     namespace fs = std::filesystem;
     verify(old_folder, earlier);
@@ -186,13 +153,10 @@ namespace compax::cli
       {
         const std::string checkpoint
           = "checkpoints/branch-" + std::to_string(branch) + ".h5";
-        coupling::Hdf5ArchiveWriter archive((folder / checkpoint).string(),
-                                            {coupling::archive_kind::die_branch,
-                                             state_parameters});
-        archive.write_attribute("relative_density", bed.relative_density());
-        archive.write_attribute("branch", double(branch));
-        save_bed(archive, "bed", bed);
-        archive.commit();
+        coupling::write_die_branch_checkpoint((folder / checkpoint).string(),
+                                              state_parameters,
+                                              bed,
+                                              branch);
         written.files.emplace_back(
           checkpoint, coupling::file_hash((folder / checkpoint).string()));
       }

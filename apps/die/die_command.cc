@@ -3,13 +3,14 @@
 #include "apps/cli/archive_entry.h"
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
-#include "apps/die/bed_checkpoint.h"
 #include "apps/die/branch_states.h"
-#include "apps/die/die_checkpoint.h"
 #include "apps/die/die_outputs.h"
 #include "apps/die/die_parameters.h"
 #include "apps/die/kill_switch.h"
+#include "coupling/die_checkpoint.h"
+#include "coupling/die_state_archive.h"
 #include "dem/die/die_study.h"
+#include "dem/wall_clock.h"
 
 #include <chrono>
 #include <fstream>
@@ -23,24 +24,17 @@ namespace compax::cli
   namespace
   {
     /// The bed saved in checkpoints/branch-<k>.h5, and k.
-    dem::Bed
-    load_branch_checkpoint(const DieInput &input, int &branch)
+    coupling::DieBranchState
+    load_branch_checkpoint(const DieInput &input)
     {
       return read_archive_entry("Protocol/Rerun branch from",
                                 input.rerun_branch_from,
                                 coupling::archive_kind::die_branch,
                                 [&] {
-                                  const coupling::Hdf5ArchiveReader archive(
+                                  return coupling::read_die_branch_checkpoint(
                                     input.rerun_branch_from,
-                                    coupling::archive_kind::die_branch,
-                                    input.state_parameters);
-                                  const double k
-                                    = archive.read_attribute("branch");
-                                  if (!(k >= 1 && k <= 1e6))
-                                    throw std::runtime_error(
-                                      "no branch number");
-                                  branch = static_cast<int>(k);
-                                  return load_bed(archive, "bed", input.model);
+                                    input.state_parameters,
+                                    input.model);
                                 });
     }
 
@@ -53,7 +47,7 @@ namespace compax::cli
       /// A resumed run: the die.csv rows and branch files taken over, and
       /// the folder of the run that wrote them (empty otherwise).
       std::vector<dem::DieRecord> taken_over;
-      BranchFiles                 branch_files;
+      coupling::DieBranchFiles    branch_files;
       std::filesystem::path       old_folder;
     };
 
@@ -79,15 +73,15 @@ namespace compax::cli
     {
       if (!input.rerun_branch_from.empty() && input.resume_from.empty())
         {
-          int            branch = 0;
-          const dem::Bed bed    = load_branch_checkpoint(input, branch);
+          const auto state = load_branch_checkpoint(input);
           return {dem::DieStudy(input.model,
                                 input.study,
-                                dem::DieStudyStart::branch(bed, branch)),
-                  origin("Rerunning unloading branch " + std::to_string(branch)
-                           + " from ",
+                                dem::DieStudyStart::branch(state.bed,
+                                                           state.branch)),
+                  origin("Rerunning unloading branch "
+                           + std::to_string(state.branch) + " from ",
                          input.rerun_branch_from,
-                         bed),
+                         state.bed),
                   {},
                   {},
                   {}};
@@ -95,16 +89,18 @@ namespace compax::cli
       if (input.resume_from.empty())
         return {dem::DieStudy(input.model, input.study), {}, {}, {}, {}};
 
-      const std::string entry = "Protocol/Resume from";
-      const std::string file  = input.resume_from;
-      dem::Bed          bed;
-      BranchFiles       files;
-      dem::DieProgress  progress = read_archive_entry(
+      const std::string       entry      = "Protocol/Resume from";
+      const std::string       file       = input.resume_from;
+      coupling::DieCheckpoint checkpoint = read_archive_entry(
         entry, file, coupling::archive_kind::die_compaction, [&] {
-          return read_die_checkpoint(
-            file, input.resume_parameters, input.model, bed, files);
+          return coupling::read_die_checkpoint(file,
+                                               input.resume_parameters,
+                                               input.model);
         });
-      const int stop = input.study.protocol.stop_after;
+      dem::Bed                 &bed      = checkpoint.bed;
+      dem::DieProgress         &progress = checkpoint.progress;
+      coupling::DieBranchFiles &files    = checkpoint.branch_files;
+      const int                 stop     = input.study.protocol.stop_after;
       if (stop > 0 && std::size_t(stop) <= progress.completed_targets)
         reject_entry("Protocol/Stop after compaction steps",
                      std::to_string(stop),
@@ -144,12 +140,10 @@ namespace compax::cli
                          const DieInput              &input,
                          const dem::DieStudyResult   &result)
     {
-      coupling::Hdf5ArchiveWriter archive(
-        (folder / "last_converged.h5").string(),
-        {coupling::archive_kind::die_state, input.state_parameters});
-      archive.write_attribute("failure", result.failure);
-      save_bed(archive, "bed", *result.last_converged);
-      archive.commit();
+      coupling::write_die_state((folder / "last_converged.h5").string(),
+                                input.state_parameters,
+                                *result.last_converged,
+                                result.failure);
     }
 
     /// The solver's work and the run's wall time since @p started.
@@ -157,9 +151,7 @@ namespace compax::cli
     report_solver(const dem::DieSolverTotals                 &t,
                   const std::chrono::steady_clock::time_point started)
     {
-      const double seconds = std::chrono::duration<double>(
-                               std::chrono::steady_clock::now() - started)
-                               .count();
+      const double seconds = dem::seconds_since(started);
       std::cout << std::defaultfloat << std::setprecision(4)
                 << "Solver: " << t.newton_iterations << " Newton iterations ("
                 << t.cg_iterations << " CG), " << t.fire_iterations
@@ -292,11 +284,11 @@ namespace compax::cli
         };
         observer.checkpoint
           = [&](const dem::Bed &state, const dem::DieProgress &progress) {
-              write_die_checkpoint(checkpoint.string(),
-                                   input.resume_parameters,
-                                   state,
-                                   progress,
-                                   branch_states.so_far());
+              coupling::write_die_checkpoint(checkpoint.string(),
+                                             input.resume_parameters,
+                                             state,
+                                             progress,
+                                             branch_states.so_far());
             };
         const dem::DieStudyResult result
           = naming_final_density(input.study,

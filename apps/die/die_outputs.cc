@@ -1,7 +1,7 @@
 #include "apps/die/die_outputs.h"
 
-#include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
+#include "io/csv_writer.h"
 
 #include <cmath>
 #include <fstream>
@@ -20,22 +20,22 @@ namespace compax::cli
     write_branches(const std::filesystem::path           &file,
                    const std::vector<dem::BranchSummary> &branches)
     {
-      CsvWriter csv(file,
-                    {"branch",
-                     "rho_max_in_die",
-                     "rho_min_in_die",
-                     "rho_tablet",
-                     "max_punch_pressure",
-                     "elastic_recovery_rho",
-                     "elastic_recovery_H",
-                     "residual_radial_pressure",
-                     "ejection_pressure",
-                     "coordination_compacted",
-                     "bonding_surface_compacted",
-                     "bonding_surface_unloaded",
-                     "bonding_surface_ejected",
-                     "tablet_youngs_modulus",
-                     "tablet_poisson_ratio"});
+      io::CsvWriter csv(file,
+                        {"branch",
+                         "rho_max_in_die",
+                         "rho_min_in_die",
+                         "rho_tablet",
+                         "max_punch_pressure",
+                         "elastic_recovery_rho",
+                         "elastic_recovery_H",
+                         "residual_radial_pressure",
+                         "ejection_pressure",
+                         "coordination_compacted",
+                         "bonding_surface_compacted",
+                         "bonding_surface_unloaded",
+                         "bonding_surface_ejected",
+                         "tablet_youngs_modulus",
+                         "tablet_poisson_ratio"});
       for (const auto &b : branches)
         {
           csv << b.branch << b.rho_max_in_die << b.rho_min_in_die
@@ -60,7 +60,7 @@ namespace compax::cli
                  const std::vector<dem::DieRecord> &rows,
                  const std::size_t                  taken_over)
     {
-      CsvWriter csv(file, {"stage", "branch", "step", "wall_seconds"});
+      io::CsvWriter csv(file, {"stage", "branch", "step", "wall_seconds"});
       for (std::size_t k = 0; k < rows.size(); ++k)
         {
           csv << rows[k].stage << rows[k].branch << rows[k].step;

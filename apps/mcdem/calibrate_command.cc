@@ -2,11 +2,12 @@
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
-#include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
 #include "apps/mcdem/mcdem_parameters.h"
 #include "apps/mcdem/mcdem_progress.h"
 #include "dem/dynamics/calibration.h"
+#include "io/csv_table.h"
+#include "io/csv_writer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,21 +20,9 @@ namespace compax::cli
 {
   namespace
   {
-    std::vector<std::string>
-    split(const std::string &line)
-    {
-      std::vector<std::string> cells;
-      std::stringstream        in(line);
-      for (std::string cell; std::getline(in, cell, ',');)
-        {
-          cell.erase(0, cell.find_first_not_of(" \t\r"));
-          cell.erase(cell.find_last_not_of(" \t\r") + 1);
-          cells.push_back(cell);
-        }
-      return cells;
-    }
-
-    /// Reads a measured curve from a CSV file with a header line.
+    /// Reads a measured curve from a CSV file with a header line: the
+    /// strain and stress columns, and the stage (1 loading, 2 unloading;
+    /// all 1 if the column is not named or not there) by name.
     dem::StressStrainCurve
     read_curve(const std::filesystem::path &file,
                const std::string           &strain_column,
@@ -45,57 +34,37 @@ namespace compax::cli
         reject_entry(entry, file.string(), "is a folder, not a CSV file");
       if (!std::filesystem::exists(file))
         reject_entry(entry, file.string(), "no such file");
-      std::ifstream in(file);
-      if (!in)
-        reject_entry(entry, file.string(), "cannot be read");
-      std::string line;
-      std::getline(in, line);
-      const auto header = split(line);
-      auto       find   = [&](const std::string &name, bool required) {
-        const auto it = std::find(header.begin(), header.end(), name);
-        if (it == header.end())
-          {
-            if (required)
-              reject_entry(entry,
-                           file.string(),
-                           "has no column '" + name + "' in its header");
-            return -1;
-          }
-        return static_cast<int>(it - header.begin());
-      };
-      const int e = find(strain_column, true), s = find(stress_column, true),
-                g = stage_column.empty() ? -1 : find(stage_column, false);
       dem::StressStrainCurve curve;
-      int                    row = 1;
-      while (std::getline(in, line))
+      try
         {
-          ++row;
-          if (line.find_first_not_of(" \t\r") == std::string::npos)
-            continue;
-          const auto cells = split(line);
-          try
+          const io::CsvTable table = io::CsvTable::read(file);
+          const std::size_t  e     = table.column(strain_column);
+          const std::size_t  s     = table.column(stress_column);
+          const bool staged = !stage_column.empty() && table.has(stage_column);
+          const std::size_t g = staged ? table.column(stage_column) : 0;
+          for (std::size_t r = 0; r < table.rows(); ++r)
             {
-              std::size_t  used   = 0;
-              const double strain = std::stod(cells.at(e), &used);
-              if (used != cells.at(e).size() || !std::isfinite(strain))
-                throw std::invalid_argument("strain");
-              const double stress = std::stod(cells.at(s), &used);
-              if (used != cells.at(s).size() || !std::isfinite(stress))
-                throw std::invalid_argument("stress");
-              const int stage = g >= 0 ? std::stoi(cells.at(g)) : 1;
-              if (stage != 1 && stage != 2)
-                throw std::invalid_argument("stage");
+              const double strain = table.number(r, e);
+              const double stress = table.number(r, s);
+              const double stage  = staged ? table.number(r, g) : 1.0;
+              for (const auto &[value, column] :
+                   {std::pair{strain, e}, std::pair{stress, s}})
+                if (!std::isfinite(value))
+                  throw io::CsvError(file.string(),
+                                     table.where(r, column)
+                                       + ": expected a finite number");
+              if (stage != 1.0 && stage != 2.0)
+                throw io::CsvError(file.string(),
+                                   table.where(r, g)
+                                     + ": expected stage 1 or 2");
               curve.strain.push_back(strain);
               curve.stress.push_back(stress);
-              curve.stage.push_back(stage);
+              curve.stage.push_back(static_cast<int>(stage));
             }
-          catch (const std::exception &)
-            {
-              reject_entry(entry,
-                           file.string(),
-                           "line " + std::to_string(row)
-                             + ": expected finite numbers (stage 1 or 2)");
-            }
+        }
+      catch (const io::CsvError &e)
+        {
+          reject_entry(entry, file.string(), e.reason());
         }
       if (curve.strain.size() < 3)
         reject_entry(entry, file.string(), "has fewer than 3 points");
@@ -294,7 +263,7 @@ namespace compax::cli
         std::cout << "Fitting on " << prepared.dem().particles().size()
                   << " particles (seed " << setup.rve.seed << ")\n";
 
-        CsvWriter history(
+        io::CsvWriter history(
           folder / "calibration.csv",
           {"simulation", "k2_over_k1", "kc_over_k1", "beta", "r2"});
         int        count  = 0;
@@ -335,9 +304,9 @@ namespace compax::cli
               << "end\n";
         }
         {
-          const auto y = dem::simulated_at(measured, result.best_curve);
-          CsvWriter  fit(folder / "calibration_fit.csv",
-                        {"strain", "stage", "measured", "simulated"});
+          const auto    y = dem::simulated_at(measured, result.best_curve);
+          io::CsvWriter fit(folder / "calibration_fit.csv",
+                            {"strain", "stage", "measured", "simulated"});
           for (std::size_t k = 0; k < y.size(); ++k)
             {
               fit << measured.strain[k] << measured.stage[k]

@@ -2,10 +2,10 @@
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
-#include "apps/common/csv_writer.h"
 #include "apps/common/gnuplot.h"
 #include "apps/mcdem/mcdem_parameters.h"
 #include "apps/mcdem/mcdem_progress.h"
+#include "io/csv_writer.h"
 
 #include <cmath>
 #include <iostream>
@@ -30,7 +30,9 @@ namespace compax::cli
                                            "cell_size"};
 
     void
-    write_row(CsvWriter &csv, const dem::CompactionRecord &r, const double L)
+    write_row(io::CsvWriter               &csv,
+              const dem::CompactionRecord &r,
+              const double                 L)
     {
       csv << r.time << r.stage << r.strain << r.stress_zz << r.stress_zz_bulk
           << r.relative_density << r.kinetic_energy << r.elastic_energy
@@ -105,12 +107,12 @@ namespace compax::cli
                      "x50, x90: median "
                   << setup.fitted_median_diameter << " m, sigma "
                   << setup.fitted_log_sigma << "\n";
-        const std::size_t          n_sizes = setup.cell_sizes.size();
-        std::vector<double>        cell_edges;
-        CsvWriter                  csv(folder / "mcdem.csv", columns);
-        std::unique_ptr<CsvWriter> study;
+        const std::size_t              n_sizes = setup.cell_sizes.size();
+        std::vector<double>            cell_edges;
+        io::CsvWriter                  csv(folder / "mcdem.csv", columns);
+        std::unique_ptr<io::CsvWriter> study;
         if (n_sizes > 1)
-          study = std::make_unique<CsvWriter>(
+          study = std::make_unique<io::CsvWriter>(
             folder / "rve_study.csv",
             std::vector<std::string>{"cell_size",
                                      "particles",
@@ -120,9 +122,9 @@ namespace compax::cli
                                      "stress_at_half_peak_strain",
                                      "residual_strain",
                                      "steps"});
-        std::unique_ptr<CsvWriter> timing;
+        std::unique_ptr<io::CsvWriter> timing;
         if (n_sizes > 1)
-          timing = std::make_unique<CsvWriter>(
+          timing = std::make_unique<io::CsvWriter>(
             folder / "timing.csv",
             std::vector<std::string>{"cell_size", "wall_seconds"});
         for (std::size_t k = 0; k < n_sizes; ++k)
@@ -143,9 +145,9 @@ namespace compax::cli
             cell_edges.push_back(L);
             std::cout << label.str() << " " << run.dem().particles().size()
                       << " particles in a " << L << " m cube\n";
-            std::unique_ptr<CsvWriter> own;
+            std::unique_ptr<io::CsvWriter> own;
             if (n_sizes > 1)
-              own = std::make_unique<CsvWriter>(
+              own = std::make_unique<io::CsvWriter>(
                 folder / ("mcdem_cell_" + std::to_string(k + 1) + ".csv"),
                 columns);
             std::vector<std::pair<double, double>> loading;

@@ -8,6 +8,7 @@
 #include "apps/common/voigt_columns.h"
 #include "dem/periodic/size_distribution_fit.h"
 #include "dem/rve/rve_packing.h"
+#include "io/csv_table.h"
 
 #include <algorithm>
 #include <cmath>
@@ -76,88 +77,55 @@ namespace compax::cli
   std::vector<Eigen::Matrix3d>
   read_strain_increments(const std::string &file, const std::string &entry)
   {
-    std::ifstream in(file);
-    if (!in)
-      reject_entry(entry, file, "cannot open the file");
     std::vector<Eigen::Matrix3d> increments;
-    std::vector<int>             slot; // Voigt index of each column, or -1
-    std::string                  line;
-    int                          number = 0;
-    auto                         trim   = [](std::string t) {
-      const auto b = t.find_first_not_of(" \t\r");
-      const auto e = t.find_last_not_of(" \t\r");
-      return b == std::string::npos ? std::string() : t.substr(b, e - b + 1);
-    };
-    while (std::getline(in, line))
+    try
       {
-        ++number;
-        line = trim(line);
-        if (line.empty() || line[0] == '#')
-          continue;
-        std::vector<std::string> cells;
-        std::stringstream        split(line);
-        for (std::string cell; std::getline(split, cell, ',');)
-          cells.push_back(trim(cell));
-        const std::string where = "line " + std::to_string(number) + ": ";
-        if (slot.empty())
+        const io::CsvTable table = io::CsvTable::read(file);
+        const auto        &names = strain_csv_columns();
+        std::size_t        slot[6];
+        try
           {
-            const auto       &names = strain_csv_columns();
-            std::vector<bool> seen(6, false);
-            for (const auto &cell : cells)
-              {
-                const auto it = std::find(names.begin(), names.end(), cell);
-                const int  b = it == names.end() ? -1 : int(it - names.begin());
-                if (b >= 0 && seen[b])
-                  reject_entry(entry,
-                               file,
-                               where + "column '" + cell + "' appears twice");
-                if (b >= 0)
-                  seen[b] = true;
-                slot.push_back(b);
-              }
             for (int b = 0; b < 6; ++b)
-              if (!seen[b])
-                reject_entry(entry,
-                             file,
-                             where + "the header lacks the column '" + names[b]
-                               + "' (need eps_xx, eps_yy, eps_zz, eps_yz, "
-                                 "eps_xz, eps_xy: tensor components)");
-            continue;
+              slot[b] = table.column(names[b]);
           }
-        if (cells.size() != slot.size())
-          reject_entry(entry,
-                       file,
-                       where + "expected " + std::to_string(slot.size())
-                         + " cells, found " + std::to_string(cells.size()));
-        dem::Vector6d v = dem::Vector6d::Zero();
-        for (std::size_t k = 0; k < cells.size(); ++k)
+        catch (const io::CsvError &e)
           {
-            if (slot[k] < 0)
-              continue;
-            char        *end   = nullptr;
-            const double value = std::strtod(cells[k].c_str(), &end);
-            if (cells[k].empty() || end != cells[k].c_str() + cells[k].size()
-                || !std::isfinite(value))
-              reject_entry(entry,
-                           file,
-                           where + "'" + cells[k] + "' is not a number");
-            if (std::abs(value) >= 0.1)
-              reject_entry(entry,
-                           file,
-                           where + "increment " + cells[k]
-                             + " is not small (|eps| must stay below 0.1 per "
-                               "step)");
-            v[slot[k]] = value;
+            throw io::CsvError(file,
+                               e.reason()
+                                 + " (need eps_xx, eps_yy, eps_zz, eps_yz, "
+                                   "eps_xz, eps_xy: tensor components)");
           }
-        // Tensor components: the shears enter the symmetric tensor as given.
-        Eigen::Matrix3d e;
-        e << v[0], v[5], v[4], //
-          v[5], v[1], v[3],    //
-          v[4], v[3], v[2];
-        increments.push_back(e);
+        for (std::size_t r = 0; r < table.rows(); ++r)
+          {
+            dem::Vector6d v;
+            for (int b = 0; b < 6; ++b)
+              {
+                v[b]                    = table.number(r, slot[b]);
+                const std::string &cell = table.text(r, slot[b]);
+                if (!std::isfinite(v[b]))
+                  throw io::CsvError(file,
+                                     table.where(r, slot[b]) + ": '" + cell
+                                       + "' is not a finite number");
+                if (std::abs(v[b]) >= 0.1)
+                  throw io::CsvError(file,
+                                     table.where(r, slot[b]) + ": increment "
+                                       + cell
+                                       + " is not small (|eps| must stay "
+                                         "below 0.1 per step)");
+              }
+            // Tensor components: the shears enter the symmetric tensor as
+            // given.
+            Eigen::Matrix3d e;
+            e << v[0], v[5], v[4], //
+              v[5], v[1], v[3],    //
+              v[4], v[3], v[2];
+            increments.push_back(e);
+          }
       }
-    if (slot.empty())
-      reject_entry(entry, file, "the file has no header line");
+    catch (const io::CsvError &e)
+      {
+        reject_entry(entry, file, e.reason());
+      }
     if (increments.empty())
       reject_entry(entry, file, "the file has no strain increments");
     return increments;

@@ -8,6 +8,7 @@
 #include "coupling/rve_archive.h"
 #include "dem/analysis/jamming_fit.h"
 #include "dem/io/particle_vtu.h"
+#include "dem/wall_clock.h"
 
 #include <fstream>
 #include <iomanip>
@@ -20,12 +21,7 @@ namespace compax::cli
   namespace
   {
     using Clock = std::chrono::steady_clock;
-
-    double
-    seconds_since(const Clock::time_point t)
-    {
-      return std::chrono::duration<double>(Clock::now() - t).count();
-    }
+    using dem::seconds_since;
 
     bool
     every(const int interval, const int k)

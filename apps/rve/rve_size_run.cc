@@ -2,11 +2,11 @@
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
-#include "apps/common/csv_writer.h"
 #include "apps/rve/rve_pack.h"
 #include "apps/rve/rve_run.h"
 #include "dem/rve/rve_packing.h"
 #include "dem/rve/rve_size_study.h"
+#include "io/csv_writer.h"
 
 #include <cmath>
 #include <iostream>
@@ -19,8 +19,8 @@ namespace compax::cli
   {
     const dem::RveSizeStudy sizes(study.model,
                                   {study.packing, study.cell_sizes, study});
-    CsvWriter timing(folder / "timing.csv", {"particle_count", "seconds"});
-    int       code = success;
+    io::CsvWriter timing(folder / "timing.csv", {"particle_count", "seconds"});
+    int           code = success;
     dem::PeriodicPackingSpec     spec;
     std::optional<RveStudy>      one;
     std::optional<RvePathOutput> output;
@@ -67,7 +67,7 @@ namespace compax::cli
                                      "cell_edge_over_mean_diameter"};
     columns.insert(columns.end(), quantities.begin(), quantities.end());
     {
-      CsvWriter csv(folder / "rve_size_study.csv", columns);
+      io::CsvWriter csv(folder / "rve_size_study.csv", columns);
       for (const dem::RveSizeCell &cell : result.cells)
         {
           csv << static_cast<long long>(cell.packing.particle_count)
@@ -81,8 +81,8 @@ namespace compax::cli
           csv.end_row();
         }
     }
-    CsvWriter spread(folder / "rve_size_spread.csv",
-                     {"quantity", "min", "max", "mean", "spread"});
+    io::CsvWriter spread(folder / "rve_size_spread.csv",
+                         {"quantity", "min", "max", "mean", "spread"});
     std::cout << "Spread between cell sizes, (max - min)/|mean|:" << std::endl;
     for (const dem::RveSizeSpread &s : result.spread)
       {

@@ -1,7 +1,7 @@
 #include "apps/rve/rve_tables.h"
 
-#include "apps/common/csv_writer.h"
 #include "apps/common/voigt_columns.h"
+#include "io/csv_writer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -195,7 +195,7 @@ namespace compax::cli
               const std::vector<std::string>         &columns,
               const std::vector<std::vector<double>> &rows)
   {
-    CsvWriter         csv(file, columns);
+    io::CsvWriter     csv(file, columns);
     const std::size_t stage = index_of(columns, "stage");
     for (const auto &row : rows)
       {

@@ -1,6 +1,7 @@
 #include "dem/die/jamming_study.h"
 
 #include "dem/analysis/jamming_fit.h"
+#include "dem/wall_clock.h"
 
 #include <chrono>
 #include <cmath>
@@ -84,9 +85,7 @@ namespace compax::dem
       {
         result.failure = die.failed() ? die.failure() : e.what();
       }
-    result.seconds
-      = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
-          .count();
+    result.seconds         = seconds_since(t0);
     result.records         = die.records();
     result.jamming_density = die.jamming_density();
     // The first compaction row at or past it (the frozen-history

@@ -1,6 +1,7 @@
 #include "dem/dynamics/uniaxial_compaction.h"
 
 #include "dem/periodic/random_insertion.h"
+#include "dem/wall_clock.h"
 
 #include <algorithm>
 #include <chrono>
@@ -11,14 +12,6 @@ namespace compax::dem
 {
   namespace
   {
-    double
-    seconds_since(const std::chrono::steady_clock::time_point start)
-    {
-      return std::chrono::duration<double>(std::chrono::steady_clock::now()
-                                           - start)
-        .count();
-    }
-
     /// Calls the progress callback about every half second of wall time.
     class Throttle
     {

@@ -2,6 +2,7 @@
 
 #include "dem/rve/periodic_bed_system.h"
 #include "dem/solver/trust_region_newton.h"
+#include "dem/wall_clock.h"
 
 #include <algorithm>
 #include <chrono>
@@ -17,12 +18,6 @@ namespace compax::dem
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
 
     using Clock = std::chrono::steady_clock;
-
-    double
-    seconds_since(const Clock::time_point t)
-    {
-      return std::chrono::duration<double>(Clock::now() - t).count();
-    }
 
     /// The symmetric part of a tangent: the elastic constants are read
     /// from it (a Cauchy-stress tangent carries a non-symmetric -sigma

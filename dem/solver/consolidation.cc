@@ -2,6 +2,7 @@
 
 #include "dem/numbers.h"
 #include "dem/solver/trust_region_newton.h"
+#include "dem/wall_clock.h"
 
 #include <algorithm>
 #include <chrono>
@@ -127,9 +128,7 @@ namespace compax::dem
     result.sums              = r.sums;
     result.relative_residual = r.relative_residual;
     result.assemblies        = assemblies;
-    result.seconds
-      = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
-          .count();
+    result.seconds           = seconds_since(t0);
     return result;
   }
 } // namespace compax::dem

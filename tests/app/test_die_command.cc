@@ -6,7 +6,7 @@
 
 #include "app_test_support.h"
 
-#include "apps/die/bed_checkpoint.h"
+#include "coupling/bed_archive.h"
 #include "tests/support/gonzalez_material1.h"
 
 #include <cmath>
@@ -136,7 +136,7 @@ TEST_F(DieCommand, NonConvergenceStopsCleanlyWithTheLastGoodState)
     (folder / "out" / "last_converged.h5").string());
   const compax::dem::ContactModel model
     = compax::testing::material1::contact_model();
-  const auto bed = compax::cli::load_bed(archive, "bed", model);
+  const auto bed = compax::coupling::load_bed(archive, "bed", model);
   EXPECT_EQ(bed.particles.size(), 150u);
   EXPECT_NEAR(bed.relative_density(),
               die.column.at("relative_density").back(),

@@ -1,9 +1,9 @@
-#include "apps/common/csv_writer.h"
+#include "io/csv_writer.h"
 
 #include <iomanip>
 #include <stdexcept>
 
-namespace compax::cli
+namespace compax::io
 {
   CsvWriter::CsvWriter(const std::filesystem::path &file,
                        std::vector<std::string>     columns)
@@ -90,4 +90,4 @@ namespace compax::cli
   {
     out.close();
   }
-} // namespace compax::cli
+} // namespace compax::io

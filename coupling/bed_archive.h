@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace compax::cli
+namespace compax::coupling
 {
   /**
    * Saves a bed state into an HDF5 archive under `group`: particle
@@ -16,15 +16,15 @@ namespace compax::cli
    * ContactModel when the bed is loaded.
    */
   void
-  save_bed(coupling::Hdf5ArchiveWriter &archive,
-           const std::string           &group,
-           const dem::Bed              &bed);
+  save_bed(Hdf5ArchiveWriter &archive,
+           const std::string &group,
+           const dem::Bed    &bed);
 
   /// Restores a bed saved by save_bed(); the contact list is rebuilt with
   /// the saved histories merged in, so positions and internal variables are
   /// exactly those saved.
   dem::Bed
-  load_bed(const coupling::Hdf5ArchiveReader &archive,
-           const std::string                 &group,
-           const dem::ContactModel           &model);
-} // namespace compax::cli
+  load_bed(const Hdf5ArchiveReader &archive,
+           const std::string       &group,
+           const dem::ContactModel &model);
+} // namespace compax::coupling

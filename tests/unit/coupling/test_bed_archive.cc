@@ -2,7 +2,7 @@
 // and continuing the compaction from the restored state gives the same
 // result as continuing the original (restart equals an uninterrupted run).
 
-#include "apps/die/bed_checkpoint.h"
+#include "coupling/bed_archive.h"
 #include "dem/die/die_setup.h"
 #include "dem/solver/load_stepper.h"
 #include "tests/support/deposited_die.h"
@@ -47,11 +47,11 @@ TEST(BedCheckpoint, RestartEqualsUninterruptedRun)
         .string();
   {
     coupling::Hdf5ArchiveWriter writer(file, {"test", ""});
-    cli::save_bed(writer, "state", original);
+    coupling::save_bed(writer, "state", original);
     writer.commit();
   }
   const coupling::Hdf5ArchiveReader reader(file);
-  dem::Bed restored = cli::load_bed(reader, "state", model);
+  dem::Bed restored = coupling::load_bed(reader, "state", model);
   std::filesystem::remove(file);
 
   ASSERT_EQ(restored.particles.size(), original.particles.size());

@@ -1,13 +1,13 @@
-#include "apps/die/bed_checkpoint.h"
+#include "coupling/bed_archive.h"
 
 #include <stdexcept>
 
-namespace compax::cli
+namespace compax::coupling
 {
   void
-  save_bed(coupling::Hdf5ArchiveWriter &archive,
-           const std::string           &group,
-           const dem::Bed              &bed)
+  save_bed(Hdf5ArchiveWriter &archive,
+           const std::string &group,
+           const dem::Bed    &bed)
   {
     const auto         &p = bed.particles;
     std::vector<double> x, radii(p.radii), materials;
@@ -47,9 +47,9 @@ namespace compax::cli
   }
 
   dem::Bed
-  load_bed(const coupling::Hdf5ArchiveReader &archive,
-           const std::string                 &group,
-           const dem::ContactModel           &model)
+  load_bed(const Hdf5ArchiveReader &archive,
+           const std::string       &group,
+           const dem::ContactModel &model)
   {
     dem::Bed   bed;
     const auto x         = archive.read_array(group + "/positions");
@@ -114,4 +114,4 @@ namespace compax::cli
     bed.contacts.rebuild(bed.particles, bed.walls, model);
     return bed;
   }
-} // namespace compax::cli
+} // namespace compax::coupling

@@ -1,11 +1,13 @@
-#include "apps/die/die_checkpoint.h"
+#include "coupling/die_checkpoint.h"
 
-#include "apps/die/bed_checkpoint.h"
+#include "coupling/bed_archive.h"
+#include "coupling/hdf5_archive.h"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
-namespace compax::cli
+namespace compax::coupling
 {
   namespace
   {
@@ -124,6 +126,43 @@ namespace compax::cli
       for_each_summary_field(s, Pack{v});
       return v.size();
     }
+
+    /// Stores @p files under @p group of an archive.
+    void
+    save_branch_files(Hdf5ArchiveWriter    &archive,
+                      const std::string    &group,
+                      const DieBranchFiles &files)
+    {
+      archive.write_text(group + "/fabric_rows", files.fabric_rows);
+      archive.write_text(group + "/histogram_rows", files.histogram_rows);
+      std::string list;
+      for (const auto &[name, hash] : files.files)
+        list += hash + " " + name + "\n";
+      archive.write_text(group + "/files", list);
+    }
+
+    /// Reads what save_branch_files() stored; refuses a list naming a file
+    /// outside the run folder.
+    DieBranchFiles
+    load_branch_files(const Hdf5ArchiveReader &archive,
+                      const std::string       &group)
+    {
+      DieBranchFiles files;
+      files.fabric_rows    = archive.read_text(group + "/fabric_rows");
+      files.histogram_rows = archive.read_text(group + "/histogram_rows");
+      std::istringstream list(archive.read_text(group + "/files"));
+      for (std::string line; std::getline(list, line);)
+        {
+          const auto        space = line.find(' ');
+          const std::string name
+            = space == std::string::npos ? "" : line.substr(space + 1);
+          if (space != 16 || name.empty() || name.front() == '/'
+              || name.find("..") != std::string::npos)
+            throw std::runtime_error("malformed list of branch files");
+          files.files.emplace_back(name, line.substr(0, space));
+        }
+      return files;
+    }
   } // namespace
 
   void
@@ -131,11 +170,9 @@ namespace compax::cli
                        const std::string      &parameters,
                        const dem::Bed         &bed,
                        const dem::DieProgress &progress,
-                       const BranchFiles      &branch_files)
+                       const DieBranchFiles   &branch_files)
   {
-    coupling::Hdf5ArchiveWriter archive(file,
-                                        {coupling::archive_kind::die_compaction,
-                                         parameters});
+    Hdf5ArchiveWriter archive(file, {archive_kind::die_compaction, parameters});
     archive.write_attribute("completed_targets",
                             double(progress.completed_targets));
     archive.write_attribute("branches_run", double(progress.branches_run));
@@ -172,17 +209,17 @@ namespace compax::cli
     archive.commit();
   }
 
-  dem::DieProgress
+  DieCheckpoint
   read_die_checkpoint(const std::string       &file,
                       const std::string       &parameters,
-                      const dem::ContactModel &model,
-                      dem::Bed                &bed,
-                      BranchFiles             &branch_files)
+                      const dem::ContactModel &model)
   {
-    const coupling::Hdf5ArchiveReader archive(
-      file, coupling::archive_kind::die_compaction, parameters);
-    dem::DieProgress p;
-    const auto       count = [&](const std::string &name) {
+    const Hdf5ArchiveReader archive(file,
+                                    archive_kind::die_compaction,
+                                    parameters);
+    DieCheckpoint           checkpoint;
+    dem::DieProgress       &p     = checkpoint.progress;
+    const auto              count = [&](const std::string &name) {
       const double v = archive.read_attribute(name);
       if (!(v >= 0.0 && v < 1e15 && v == std::floor(v)))
         throw std::runtime_error("attribute '" + name
@@ -198,7 +235,7 @@ namespace compax::cli
     p.fire_iterations   = static_cast<long>(count("fire_iterations"));
     const auto n_rows   = static_cast<std::size_t>(count("rows"));
     const auto n_branches = static_cast<std::size_t>(count("branches"));
-    bed                   = load_bed(archive, "bed", model);
+    checkpoint.bed        = load_bed(archive, "bed", model);
     p.compaction_targets  = archive.read_array("compaction_targets");
 
     const std::size_t n_fields = count_fields();
@@ -227,10 +264,10 @@ namespace compax::cli
         for_each_summary_field(s, Unpack{in});
         p.branches.push_back(s);
       }
-    branch_files = load_branch_files(archive, "branch_files");
+    checkpoint.branch_files = load_branch_files(archive, "branch_files");
     if (p.completed_targets > p.compaction_targets.size() || p.rows.empty()
         || p.branches_run < 0)
       throw std::runtime_error("inconsistent die checkpoint");
-    return p;
+    return checkpoint;
   }
-} // namespace compax::cli
+} // namespace compax::coupling
