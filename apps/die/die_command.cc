@@ -244,78 +244,84 @@ namespace compax::cli
       run(dealii::ParameterHandler    &prm,
           const std::filesystem::path &folder) const override
       {
-        const DieInput input    = get_die_input(prm);
-        const auto     started  = std::chrono::steady_clock::now();
-        PreparedStudy  prepared = prepare_study(input);
-        if (!prepared.origin.empty())
-          std::cout << prepared.origin << std::endl;
-
-        std::ofstream csv(folder / "die.csv");
-        KillSwitch    kill_switch(csv.rdbuf());
-        std::ostream  rows(&kill_switch);
-        dem::DieCompaction::write_csv_header(rows);
-        for (const auto &row : prepared.taken_over)
-          dem::DieCompaction::write_csv_row(rows, row);
-        rows.flush();
-        BranchStateWriter branch_states(folder, input.state_parameters);
-        if (!prepared.old_folder.empty())
-          try
-            {
-              branch_states.carry_over(prepared.old_folder,
-                                       prepared.branch_files);
-            }
-          catch (const std::exception &e)
-            {
-              reject_entry("Protocol/Resume from", input.resume_from, e.what());
-            }
-
-        const auto checkpoint = folder / "checkpoints" / "compaction.h5";
-        dem::DieStudyObserver observer;
-        observer.progress
-          = [](const std::string &line) { std::cout << line << std::endl; };
-        observer.row = [&rows](const dem::DieRecord &row) {
-          dem::DieCompaction::write_csv_row(rows, row);
-          rows.flush();
-        };
-        observer.branch_state = [&branch_states](const dem::Bed    &state,
-                                                 const std::string &stage,
-                                                 const int          branch) {
-          branch_states(state, stage, branch);
-        };
-        observer.checkpoint
-          = [&](const dem::Bed &state, const dem::DieProgress &progress) {
-              coupling::write_die_checkpoint(checkpoint.string(),
-                                             input.resume_parameters,
-                                             state,
-                                             progress,
-                                             branch_states.so_far());
-            };
-        const dem::DieStudyResult result
-          = naming_final_density(input.study,
-                                 [&] { return prepared.study.run(observer); });
-
-        int code = success;
-        if (result.stopped)
-          std::cout << "Stopped as asked; continue with\n  set Resume "
-                       "from = <OUTDIR>/checkpoints/compaction.h5\nin "
-                       "subsection Protocol."
-                    << std::endl;
-        if (!result.converged)
-          {
-            std::cerr << "compax die: " << result.failure
-                      << "; the converged steps are kept in die.csv and the "
-                         "last converged state in last_converged.h5\n";
-            write_last_converged(folder, input, result);
-            code = not_converged;
-          }
-        rows.flush();
-        csv.close();
-        write_die_outputs(folder, result);
-        report_solver(result.solver, started);
-        return code;
+        return run_die(prm, folder).code;
       }
     };
   } // namespace
+
+  DieRun
+  run_die(dealii::ParameterHandler &prm, const std::filesystem::path &folder)
+  {
+    const DieInput input    = get_die_input(prm);
+    const auto     started  = std::chrono::steady_clock::now();
+    PreparedStudy  prepared = prepare_study(input);
+    if (!prepared.origin.empty())
+      std::cout << prepared.origin << std::endl;
+
+    std::ofstream csv(folder / "die.csv");
+    KillSwitch    kill_switch(csv.rdbuf());
+    std::ostream  rows(&kill_switch);
+    dem::DieCompaction::write_csv_header(rows);
+    for (const auto &row : prepared.taken_over)
+      dem::DieCompaction::write_csv_row(rows, row);
+    rows.flush();
+    BranchStateWriter branch_states(folder, input.state_parameters);
+    if (!prepared.old_folder.empty())
+      try
+        {
+          branch_states.carry_over(prepared.old_folder, prepared.branch_files);
+        }
+      catch (const std::exception &e)
+        {
+          reject_entry("Protocol/Resume from", input.resume_from, e.what());
+        }
+
+    const auto            checkpoint = folder / "checkpoints" / "compaction.h5";
+    dem::DieStudyObserver observer;
+    observer.progress
+      = [](const std::string &line) { std::cout << line << std::endl; };
+    observer.row = [&rows](const dem::DieRecord &row) {
+      dem::DieCompaction::write_csv_row(rows, row);
+      rows.flush();
+    };
+    observer.branch_state = [&branch_states](const dem::Bed    &state,
+                                             const std::string &stage,
+                                             const int          branch) {
+      branch_states(state, stage, branch);
+    };
+    observer.checkpoint
+      = [&](const dem::Bed &state, const dem::DieProgress &progress) {
+          coupling::write_die_checkpoint(checkpoint.string(),
+                                         input.resume_parameters,
+                                         state,
+                                         progress,
+                                         branch_states.so_far());
+        };
+    DieRun run;
+    run.result                        = naming_final_density(input.study, [&] {
+      return prepared.study.run(observer);
+    });
+    const dem::DieStudyResult &result = run.result;
+
+    if (result.stopped)
+      std::cout << "Stopped as asked; continue with\n  set Resume "
+                   "from = <OUTDIR>/checkpoints/compaction.h5\nin "
+                   "subsection Protocol."
+                << std::endl;
+    if (!result.converged)
+      {
+        std::cerr << "compax die: " << result.failure
+                  << "; the converged steps are kept in die.csv and the "
+                     "last converged state in last_converged.h5\n";
+        write_last_converged(folder, input, result);
+        run.code = not_converged;
+      }
+    rows.flush();
+    csv.close();
+    write_die_outputs(folder, result);
+    report_solver(result.solver, started);
+    return run;
+  }
 
   std::unique_ptr<Command>
   make_die_command()

@@ -74,12 +74,14 @@ namespace compax::cli
   }
 
   std::shared_ptr<fem::MaterialModel>
-  make_multiscale_material(dealii::ParameterHandler    &prm,
-                           const std::string           &model,
-                           const std::filesystem::path &folder,
-                           const unsigned int           compaction_axis,
-                           const unsigned int           points_per_cell,
-                           MPI_Comm                     comm)
+  make_multiscale_material(
+    dealii::ParameterHandler                        &prm,
+    const std::string                               &model,
+    const std::filesystem::path                     &folder,
+    const unsigned int                               compaction_axis,
+    const unsigned int                               points_per_cell,
+    MPI_Comm                                         comm,
+    std::optional<coupling::RveDatabaseStudyResult> *database)
   {
     // What the database and the RVE states depend on.
     const std::string parameters = canonical_parameters(prm, {"Multiscale"});
@@ -124,6 +126,8 @@ namespace compax::cli
                                        result.database,
                                        parameters);
       write_dpc_table(out, result.fit);
+      if (database)
+        *database = result;
     };
     return coupling::make_multiscale_database_material(setup.spec,
                                                        setup.cell.model,

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "coupling/rve_database_study.h"
 #include "fem/material_model.h"
 
 #include <deal.II/base/mpi.h>
@@ -7,6 +8,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace compax::cli
@@ -37,13 +39,16 @@ namespace compax::cli
    *    row of the tablet model's stress frame; the `points_per_cell`
    *    quadrature points of a cell start from the same packing.
    * Collective on @p comm. Throws std::runtime_error on every rank when
-   * the database's RVE does not converge.
+   * the database's RVE does not converge. The database built, if any, is
+   * also given in @p database (when not null, on rank 0).
    */
   std::shared_ptr<fem::MaterialModel>
-  make_multiscale_material(dealii::ParameterHandler    &prm,
-                           const std::string           &model,
-                           const std::filesystem::path &folder,
-                           unsigned int                 compaction_axis,
-                           unsigned int                 points_per_cell,
-                           MPI_Comm                     comm);
+  make_multiscale_material(
+    dealii::ParameterHandler                        &prm,
+    const std::string                               &model,
+    const std::filesystem::path                     &folder,
+    unsigned int                                     compaction_axis,
+    unsigned int                                     points_per_cell,
+    MPI_Comm                                         comm,
+    std::optional<coupling::RveDatabaseStudyResult> *database = nullptr);
 } // namespace compax::cli

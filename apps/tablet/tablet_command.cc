@@ -605,7 +605,7 @@ namespace compax::cli
     }
 
     template <int dim>
-    int
+    coupling::TabletStudyResult
     run_model(const TabletSetup           &setup,
               const std::filesystem::path &folder,
               MPI_Comm                     comm)
@@ -643,7 +643,7 @@ namespace compax::cli
           print_tablet_summary(result, setup.process);
           plot_tablet(folder);
         }
-      return result.converged ? success : not_converged;
+      return result;
     }
 
     class TabletCommand : public Command
@@ -711,40 +711,49 @@ namespace compax::cli
       run(dealii::ParameterHandler    &prm,
           const std::filesystem::path &folder) const override
       {
-        TabletSetup setup = read(prm);
-        // All ranks write their field pieces into rank 0's folder.
-        std::string shared = folder.string();
-        shared = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, shared, 0);
-        if (!setup.multiscale_model.empty())
-          {
-            try
-              {
-                // The axial row of the model's stress frame: (r, z, theta)
-                // in r-z, (x, y, z) in 3-D; Gauss points per cell.
-                const unsigned int dim = setup.three_d ? 3 : 2;
-                setup.material         = make_multiscale_material(
-                  prm,
-                  setup.multiscale_model,
-                  shared,
-                  dim - 1,
-                  dealii::Utilities::pow(setup.solver.degree + 1, dim),
-                  MPI_COMM_WORLD);
-              }
-            catch (const std::runtime_error &e)
-              {
-                // Every rank fails alike; one reports.
-                if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)
-                    == 0)
-                  std::cerr << "compax tablet: " << e.what() << std::endl;
-                return not_converged;
-              }
-          }
-        int code = setup.three_d ? run_model<3>(setup, shared, MPI_COMM_WORLD)
-                                 : run_model<2>(setup, shared, MPI_COMM_WORLD);
-        return code;
+        return run_tablet(prm, folder).code;
       }
     };
   } // namespace
+
+  TabletRun
+  run_tablet(dealii::ParameterHandler &prm, const std::filesystem::path &folder)
+  {
+    TabletSetup setup = read(prm);
+    TabletRun   run;
+    // All ranks write their field pieces into rank 0's folder.
+    std::string shared = folder.string();
+    shared = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, shared, 0);
+    if (!setup.multiscale_model.empty())
+      {
+        try
+          {
+            // The axial row of the model's stress frame: (r, z, theta)
+            // in r-z, (x, y, z) in 3-D; Gauss points per cell.
+            const unsigned int dim = setup.three_d ? 3 : 2;
+            setup.material         = make_multiscale_material(
+              prm,
+              setup.multiscale_model,
+              shared,
+              dim - 1,
+              dealii::Utilities::pow(setup.solver.degree + 1, dim),
+              MPI_COMM_WORLD,
+              &run.database);
+          }
+        catch (const std::runtime_error &e)
+          {
+            // Every rank fails alike; one reports.
+            if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+              std::cerr << "compax tablet: " << e.what() << std::endl;
+            run.code = not_converged;
+            return run;
+          }
+      }
+    run.result = setup.three_d ? run_model<3>(setup, shared, MPI_COMM_WORLD)
+                               : run_model<2>(setup, shared, MPI_COMM_WORLD);
+    run.code   = run.result->converged ? success : not_converged;
+    return run;
+  }
 
   std::unique_ptr<Command>
   make_tablet_command()

@@ -8,19 +8,21 @@
 
 #include "app_test_support.h"
 
-#include "apps/compare/compare_table.h"
-#include "apps/compare/interior_comparison.h"
+#include "apps/compare/compare_outputs.h"
+#include "coupling/comparison_table.h"
+#include "coupling/interior_comparison.h"
 
 #include <cmath>
 #include <set>
+#include <tuple>
 
 using compax::testing::AppTest;
 using compax::testing::Csv;
 
 namespace
 {
-  using compax::cli::ComparisonRow;
-  using compax::cli::DensitySeries;
+  using compax::coupling::ComparisonRow;
+  using compax::coupling::DensitySeries;
 
   constexpr double pi = 3.14159265358979323846;
 
@@ -79,19 +81,19 @@ TEST(CompareTable, InterpolationIsExactForLinearData)
       s.y.push_back(3.0 - 7.0 * x);
     }
   for (const double x : {0.55, 0.57, 0.6123, 0.7, 0.73, 0.8, 0.8999, 0.9})
-    EXPECT_NEAR(compax::cli::interpolate(s, x), 3.0 - 7.0 * x, 1e-14) << x;
+    EXPECT_NEAR(compax::coupling::interpolate(s, x), 3.0 - 7.0 * x, 1e-14) << x;
   // Within reach of an end the end segment is extended: still exact.
-  EXPECT_NEAR(compax::cli::interpolate(s, 0.5495, 1e-3),
+  EXPECT_NEAR(compax::coupling::interpolate(s, 0.5495, 1e-3),
               3.0 - 7.0 * 0.5495,
               1e-14);
-  EXPECT_NEAR(compax::cli::interpolate(s, 0.9008, 1e-3),
+  EXPECT_NEAR(compax::coupling::interpolate(s, 0.9008, 1e-3),
               3.0 - 7.0 * 0.9008,
               1e-14);
-  EXPECT_TRUE(std::isnan(compax::cli::interpolate(s, 0.9011, 1e-3)));
+  EXPECT_TRUE(std::isnan(compax::coupling::interpolate(s, 0.9011, 1e-3)));
   // No extrapolation.
-  EXPECT_TRUE(std::isnan(compax::cli::interpolate(s, 0.5499)));
-  EXPECT_TRUE(std::isnan(compax::cli::interpolate(s, 0.91)));
-  EXPECT_TRUE(std::isnan(compax::cli::interpolate(DensitySeries{}, 0.7)));
+  EXPECT_TRUE(std::isnan(compax::coupling::interpolate(s, 0.5499)));
+  EXPECT_TRUE(std::isnan(compax::coupling::interpolate(s, 0.91)));
+  EXPECT_TRUE(std::isnan(compax::coupling::interpolate(DensitySeries{}, 0.7)));
 }
 
 TEST(CompareTable, RowsAtTheReferenceSamplesWithRelativeDifferences)
@@ -110,7 +112,7 @@ TEST(CompareTable, RowsAtTheReferenceSamplesWithRelativeDifferences)
       q.x.push_back(x);
       q.y.push_back(3.0 * (x - 0.5) + 1.0);
     }
-  const auto rows = compax::cli::compare_series("punch_pressure", p, q);
+  const auto rows = compax::coupling::compare_series("punch_pressure", p, q);
   // x = 0.5 has a zero reference (no relative difference): left out.
   ASSERT_EQ(rows.size(), 4u);
   for (const ComparisonRow &r : rows)
@@ -167,24 +169,51 @@ using CompareCommand = AppTest;
 /// cells are empty and its comparison rows have no value.
 TEST_F(CompareCommand, InteriorRowsTakeTheRveAtTheInteriorDensity)
 {
-  write("die.csv",
-        "stage,branch,relative_density,rho_interior,sigma_zz_interior,"
-        "sigma_rr_interior\n"
-        "compaction,0,0.55,nan,nan,nan\n"
-        "compaction,0,0.60,0.62,-1e3,-5e2\n"
-        "compaction,0,0.70,0.74,-2e6,-1e6\n"
-        "compaction,0,0.80,0.83,-8e6,-5e6\n"
-        "unloading,1,0.79,0.82,-1e6,-3e6\n"
-        "compaction,0,0.90,0.95,-3e7,-2e7\n");
+  // die.csv: stage, branch, relative_density, rho_interior,
+  // sigma_zz_interior, sigma_rr_interior.
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<compax::dem::DieRecord> die;
+  for (const auto &[stage, branch, rho, rho_i, zz, rr] : std::vector<
+         std::tuple<std::string, int, double, double, double, double>>{
+         {"compaction", 0, 0.55, nan, nan, nan},
+         {"compaction", 0, 0.60, 0.62, -1e3, -5e2},
+         {"compaction", 0, 0.70, 0.74, -2e6, -1e6},
+         {"compaction", 0, 0.80, 0.83, -8e6, -5e6},
+         {"unloading", 1, 0.79, 0.82, -1e6, -3e6},
+         {"compaction", 0, 0.90, 0.95, -3e7, -2e7}})
+    {
+      compax::dem::DieRecord r;
+      r.stage             = stage;
+      r.branch            = branch;
+      r.relative_density  = rho;
+      r.rho_interior      = rho_i;
+      r.sigma_zz_interior = zz;
+      r.sigma_rr_interior = rr;
+      die.push_back(r);
+    }
   // sigma_zz = -1e8 (rho - 0.6), lateral -4e7 (rho - 0.6) on compaction.
-  write("database.csv",
-        "branch,path,relative_density,sigma_xx,sigma_yy,sigma_zz\n"
-        "-1,compaction,0.6,0,0,0\n"
-        "0,unloading,0.7,9,9,9\n"
-        "-1,compaction,0.9,-1.4e7,-1e7,-3e7\n");
+  // database.csv: branch, path, relative_density, sigma_xx, sigma_yy,
+  // sigma_zz.
+  compax::coupling::RveDatabase database;
+  for (const auto &[branch, path, rho, xx, yy, zz] : std::vector<
+         std::tuple<int, std::string, double, double, double, double>>{
+         {-1, "compaction", 0.6, 0, 0, 0},
+         {0, "unloading", 0.7, 9, 9, 9},
+         {-1, "compaction", 0.9, -1.4e7, -1e7, -3e7}})
+    {
+      compax::coupling::DatabaseRow r{};
+      r.branch           = branch;
+      r.path             = path;
+      r.relative_density = rho;
+      r.stress           = compax::dem::Vector6d::Zero();
+      r.stress[0]        = xx;
+      r.stress[1]        = yy;
+      r.stress[2]        = zz;
+      database.rows.push_back(r);
+    }
   using namespace compax::cli;
-  const auto rows = compare_interior(CsvTable(folder / "die.csv"),
-                                     CsvTable(folder / "database.csv"));
+  using namespace compax::coupling;
+  const auto rows = compare_interior(die, database);
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_DOUBLE_EQ(rows[1].relative_density_die, 0.70);
   EXPECT_DOUBLE_EQ(rows[1].relative_density_interior, 0.74);

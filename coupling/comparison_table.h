@@ -1,11 +1,10 @@
 #pragma once
 
-#include <filesystem>
-#include <map>
+#include <cstddef>
 #include <string>
 #include <vector>
 
-namespace compax::cli
+namespace compax::coupling
 {
   /// A quantity sampled against relative density, e.g. punch pressure along
   /// a compaction path: x [-] and y (any unit), in the order sampled.
@@ -24,13 +23,13 @@ namespace compax::cli
   double
   interpolate(const DensitySeries &s, double x, double reach = 0.0);
 
-  /// One row of compare.csv.
+  /// One compared sample: a row of compax compare's compare.csv.
   struct ComparisonRow
   {
     std::string comparison;
     double      relative_density;
     double      reference;
-    /// NaN when the compared study has no value there (written empty).
+    /// NaN when the compared study has no value there.
     double value;
 
     /// (value - reference) / |reference|; NaN when value is missing.
@@ -50,46 +49,18 @@ namespace compax::cli
                  const DensitySeries &compared,
                  double               reach = 0.0);
 
-  /// The columns of compare.csv, in order.
-  const std::vector<std::string> &
-  comparison_columns();
-
-  /// compare.csv: comparison,relative_density,reference,value,
-  /// relative_difference (missing values are empty cells).
-  void
-  write_comparison_csv(const std::filesystem::path      &file,
-                       const std::vector<ComparisonRow> &rows);
-
-  /**
-   * A CSV file written by a compax command, as its columns by name (text
-   * cells as they are). Throws std::runtime_error naming the file when it
-   * is missing or a column asked for is not there.
-   */
-  class CsvTable
+  /// How close the rows of one comparison are: what a report states about
+  /// it.
+  struct ComparisonSummary
   {
-  public:
-    explicit CsvTable(const std::filesystem::path &file);
-
-    std::size_t
-    rows() const
-    {
-      return n_rows;
-    }
-
-    bool
-    has(const std::string &column) const;
-
-    /// The cells of a column as text.
-    const std::vector<std::string> &
-    text(const std::string &column) const;
-
-    /// The cells of a column as numbers (NaN for empty or text cells).
-    std::vector<double>
-    numbers(const std::string &column) const;
-
-  private:
-    std::filesystem::path                           file;
-    std::map<std::string, std::vector<std::string>> cells;
-    std::size_t                                     n_rows = 0;
+    /// Rows with a relative difference, and rows without (missing value).
+    std::size_t compared = 0, missing = 0;
+    /// Sum and largest of the absolute relative differences [-].
+    double sum_abs = 0.0, largest_abs = 0.0;
   };
-} // namespace compax::cli
+
+  /// The summary of the rows named @p comparison among @p rows.
+  ComparisonSummary
+  summarize(const std::vector<ComparisonRow> &rows,
+            const std::string                &comparison);
+} // namespace compax::coupling

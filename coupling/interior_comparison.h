@@ -1,19 +1,20 @@
 #pragma once
 
-#include "apps/compare/compare_table.h"
+#include "coupling/comparison_table.h"
+#include "coupling/rve_database.h"
+#include "dem/die/die_compaction.h"
 
-#include <filesystem>
 #include <vector>
 
-namespace compax::cli
+namespace compax::coupling
 {
   /**
    * The die's interior against the RVE (issue #15, item 4): at each
    * compaction state of the particle die, the solid fraction and stress of
-   * its interior (die.csv: rho_interior, sigma_zz_interior,
+   * its interior (DieRecord::rho_interior, sigma_zz_interior,
    * sigma_rr_interior, the particles farther than two diameters from every
    * wall) beside the RVE's stress along its uniaxial compaction path
-   * (database.csv rows of path "compaction") interpolated at the
+   * (database rows of path "compaction") interpolated at the
    * interior's own solid fraction. The wall layer of a die is looser than
    * its interior, so the interior, not the die average, is what a periodic
    * cell represents.
@@ -31,12 +32,14 @@ namespace compax::cli
     double sigma_xx_rve;
   };
 
-  /// The rows of interior.csv from a die.csv (compaction rows of the
-  /// compaction path, branch 0, with an interior) and a database.csv.
+  /// One row per state of the die's compaction path (compaction rows of
+  /// branch 0 with an interior) among @p die_rows, beside the RVE of
+  /// @p database.
   std::vector<InteriorRow>
-  compare_interior(const CsvTable &die_csv, const CsvTable &database_csv);
+  compare_interior(const std::vector<dem::DieRecord> &die_rows,
+                   const RveDatabase                 &database);
 
-  /// compare.csv rows of the interior comparison: interior_sigma_zz
+  /// Comparison rows of the interior: interior_sigma_zz
   /// (reference the die interior's sigma_zz, value the RVE's) and
   /// interior_lateral_ratio (sigma_rr / sigma_zz of the interior against
   /// sigma_xx / sigma_zz of the RVE), both at the interior's density and
@@ -44,11 +47,4 @@ namespace compax::cli
   std::vector<ComparisonRow>
   interior_comparison_rows(const std::vector<InteriorRow> &rows,
                            double                          resolution);
-
-  /// interior.csv: relative_density_die, relative_density_interior,
-  /// sigma_zz_interior, sigma_rr_interior, sigma_zz_rve, sigma_xx_rve
-  /// (missing values empty).
-  void
-  write_interior_csv(const std::filesystem::path    &file,
-                     const std::vector<InteriorRow> &rows);
-} // namespace compax::cli
+} // namespace compax::coupling
