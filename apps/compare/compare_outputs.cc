@@ -1,6 +1,6 @@
 #include "apps/compare/compare_outputs.h"
 
-#include "apps/common/csv_writer.h"
+#include "io/csv_writer.h"
 #include "apps/common/gnuplot.h"
 
 #include <cmath>
@@ -54,7 +54,7 @@ namespace compax::cli
   write_comparison_csv(const std::filesystem::path                &file,
                        const std::vector<coupling::ComparisonRow> &rows)
   {
-    CsvWriter csv(file, comparison_columns());
+    io::CsvWriter csv(file, comparison_columns());
     for (const coupling::ComparisonRow &r : rows)
       {
         csv << r.comparison << r.relative_density << r.reference;
@@ -71,7 +71,7 @@ namespace compax::cli
   write_interior_csv(const std::filesystem::path              &file,
                      const std::vector<coupling::InteriorRow> &rows)
   {
-    CsvWriter csv(file,
+    io::CsvWriter csv(file,
                   {"relative_density_die",
                    "relative_density_interior",
                    "sigma_zz_interior",
