@@ -1,5 +1,6 @@
 #include "dem/nonlocal/nonlocal_trust_region.h"
 
+#include "dem/solver/step_limits.h"
 #include "dem/solver/trust_region_newton.h"
 
 #include <algorithm>
@@ -9,105 +10,28 @@
 
 namespace compax::dem
 {
+  namespace
+  {
+    /// The model Hessian of NonlocalTrustRegion, the frozen-angle Jacobian
+    /// H of the system, as the operator of SteihaugCG.
+    struct FrozenAngleJacobian
+    {
+      NonlocalBedSystem &system;
+
+      void
+      vmult(Eigen::VectorXd &Hv, const Eigen::VectorXd &v) const
+      {
+        system.apply_jacobian(v, Hv, false);
+      }
+    };
+  } // namespace
+
   NonlocalTrustRegion::NonlocalTrustRegion(
     const NonlocalTrustRegionOptions options,
     const NewtonKrylovOptions        krylov_options)
       : opts(options)
       , krylov(krylov_options)
   {
-  }
-
-  double
-  NonlocalTrustRegion::to_boundary(const Eigen::VectorXd &dir)
-  {
-    M.multiply(Ms, s);
-    M.multiply(Mp, dir);
-    const double ss = s.dot(Ms), sp = s.dot(Mp), pp = dir.dot(Mp);
-    if (!(pp > 0.0))
-      return 0.0;
-    const double disc = std::max(0.0, sp * sp + pp * (radius * radius - ss));
-    return (-sp + std::sqrt(disc)) / pp;
-  }
-
-  NonlocalTrustRegion::CgResult
-  NonlocalTrustRegion::steihaug(NonlocalBedSystem &system,
-                                const double       relative_tolerance)
-  {
-    const Eigen::Index n = F.size();
-    s.setZero(n);
-    r.resize(n);
-    z.resize(n);
-    p.resize(n);
-    Hp.resize(n);
-    Ms.resize(n);
-    Mp.resize(n);
-    CgResult result;
-    // Work with H / scale so that the model agrees with |s|_M.
-    const double scale = M.scale();
-    r                  = F / scale;
-    M.solve(z, r);
-    p                 = -z;
-    double       rz   = r.dot(z);
-    const double stop = relative_tolerance * relative_tolerance * rz;
-    if (rz > 0.0)
-      for (int it = 0; it < opts.max_cg_iterations; ++it)
-        {
-          result.iterations = it + 1;
-          system.apply_jacobian(p, Hp, false);
-          Hp /= scale;
-          const double curvature = p.dot(Hp);
-          if (!(curvature > 0.0))
-            {
-              s += to_boundary(p) * p;
-              result.on_boundary = true;
-              break;
-            }
-          const double alpha = rz / curvature;
-          M.multiply(Ms, s);
-          M.multiply(Mp, p);
-          const double ss = s.dot(Ms), sp = s.dot(Mp), pp = p.dot(Mp);
-          if (ss + 2.0 * alpha * sp + alpha * alpha * pp >= radius * radius)
-            {
-              s += to_boundary(p) * p;
-              result.on_boundary = true;
-              break;
-            }
-          s += alpha * p;
-          r += alpha * Hp;
-          M.solve(z, r);
-          const double rz_new = r.dot(z);
-          if (rz_new <= stop)
-            break;
-          p  = -z + (rz_new / rz) * p;
-          rz = rz_new;
-        }
-    system.apply_jacobian(s, Hp, false);
-    result.predicted_decrease = -(F.dot(s) + 0.5 * s.dot(Hp));
-    M.multiply(Ms, s);
-    result.step_norm = std::sqrt(std::max(s.dot(Ms), 0.0));
-    return result;
-  }
-
-  bool
-  NonlocalTrustRegion::clip(const NonlocalBedSystem &system)
-  {
-    const std::size_t n = system.n_particles();
-    factor.setOnes(n);
-    bool         clipped = system.limit_closing(s, factor);
-    const double cap     = 0.25 * system.skin();
-    for (std::size_t i = 0; i < n; ++i)
-      {
-        const double len = s.segment<3>(3 * i).norm();
-        if (len * factor[i] > cap)
-          {
-            factor[i] = cap / len;
-            clipped   = true;
-          }
-      }
-    if (clipped)
-      for (std::size_t i = 0; i < n; ++i)
-        s.segment<3>(3 * i) *= factor[i];
-    return clipped;
   }
 
   NonlocalTrustRegionResult
@@ -210,14 +134,21 @@ namespace compax::dem
         M.compute(K, opts.preconditioner_floor);
         const double eta = std::min(opts.max_forcing, std::sqrt(F.norm() / F0))
                            * (force_ok ? 0.1 : 1.0);
-        const CgResult sub = steihaug(system, eta);
+        const SteihaugResult sub = cg.solve(FrozenAngleJacobian{system},
+                                            M,
+                                            F,
+                                            radius,
+                                            eta,
+                                            opts.max_cg_iterations,
+                                            s);
         result.cg_iterations += sub.iterations;
         ++result.iterations;
         double pred = sub.predicted_decrease, step_norm = sub.step_norm;
-        if (clip(system))
+        if (limit_step_to_gaps(system, s, factor))
           {
             system.apply_jacobian(s, Hp, false);
             pred = -(F.dot(s) + 0.5 * s.dot(Hp));
+            Ms.resize(s.size());
             M.multiply(Ms, s);
             step_norm = std::sqrt(std::max(s.dot(Ms), 0.0));
           }

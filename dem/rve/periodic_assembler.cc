@@ -2,7 +2,7 @@
 
 #include "dem/numbers.h"
 #include "dem/solver/contact_assembler.h"
-#include "dem/solver/pair_block.h"
+#include "dem/solver/pair_terms.h"
 
 #include <cmath>
 
@@ -55,40 +55,16 @@ namespace compax::dem
                               BlockSparseMatrix  *K,
                               const ContactBranch branch)
   {
-    const ParticleSystem &p = bed.particles;
-    F.setZero(3 * p.size());
+    F.setZero(3 * bed.particles.size());
+    const auto response
+      = [branch](const PeriodicContact &c, const double gamma) {
+          return periodic_contact_response(c, gamma, branch);
+        };
+    LoadedContacts loaded;
+    for (std::size_t k = 0; k < bed.contacts.pairs.size(); ++k)
+      add_pair_terms<with_stiffness>(bed, k, response, pattern, F, K, loaded);
     ContactSums sums;
-    double      sum_abs = 0.0;
-    const auto &pairs   = bed.contacts.pairs;
-    for (std::size_t k = 0; k < pairs.size(); ++k)
-      {
-        const PeriodicContact &c     = pairs[k];
-        const Eigen::Vector3d  d     = branch_vector(p, bed.cell, c);
-        const double           dist  = d.norm();
-        const double           gamma = p.radii[c.i] + p.radii[c.j] - dist;
-        if (c.history.a_p == 0.0 && gamma <= 0.0)
-          continue; // virgin and apart (most candidates of the list)
-        const ContactResponse r = periodic_contact_response(c, gamma, branch);
-        if (r.force == 0.0 && r.stiffness == 0.0)
-          continue;
-        const Eigen::Vector3d n = d / dist;
-        scatter_pair(F,
-                     with_stiffness ? K : nullptr,
-                     c.i,
-                     c.j,
-                     with_stiffness ? pattern.ij(k) : 0,
-                     with_stiffness ? pattern.ji(k) : 0,
-                     n,
-                     dist,
-                     r);
-        if (r.force != 0.0)
-          {
-            ++sums.n_loaded;
-            sum_abs += std::abs(r.force);
-          }
-      }
-    if (sums.n_loaded > 0)
-      sums.mean_force = sum_abs / sums.n_loaded;
+    loaded.report(sums);
     return sums;
   }
 
@@ -102,5 +78,4 @@ namespace compax::dem
                                      Eigen::VectorXd &,
                                      BlockSparseMatrix *,
                                      ContactBranch);
-
 } // namespace compax::dem

@@ -47,25 +47,13 @@ namespace compax::dem
    * surviving (i, j, image) and keeps pairs with a history that left the
    * list, as the die's ContactSet does.
    */
-  class PeriodicContactSet
+  class PeriodicContactSet : public VerletList
   {
   public:
     /// @param skin Verlet skin [m], e.g. 0.3 R
     explicit PeriodicContactSet(double skin = 0.0);
 
     std::vector<PeriodicContact> pairs;
-
-    double
-    skin() const
-    {
-      return skin_;
-    }
-
-    void
-    set_skin(double skin)
-    {
-      skin_ = skin;
-    }
 
     /// Rebuilds the list if the displacement criterion asks for it;
     /// returns whether it did.
@@ -80,13 +68,6 @@ namespace compax::dem
             const PeriodicCell   &cell,
             const ContactModel   &model);
 
-    /// Increases at every rebuild (stiffness patterns compare it).
-    std::uint64_t
-    revision() const
-    {
-      return revision_;
-    }
-
     /// Applies Eq. (13) to every contact at the current (converged)
     /// positions, with forces resolved to `resolution` [N] (see
     /// update_history()); the only place where histories change.
@@ -96,13 +77,9 @@ namespace compax::dem
                      double                resolution = 0.0);
 
   private:
-    double                       skin_;
-    std::uint64_t                revision_ = 0;
-    bool                         built     = false;
     PeriodicCellGrid             grid;
     std::vector<ImagePair>       candidates;
     std::vector<PeriodicContact> old_pairs;
-    std::vector<Eigen::Vector3d> reference_positions;
     Eigen::Matrix3d              reference_lattice;
   };
 } // namespace compax::dem

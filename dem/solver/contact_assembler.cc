@@ -1,7 +1,6 @@
 #include "dem/solver/contact_assembler.h"
 
 #include "dem/numbers.h"
-#include "dem/solver/pair_block.h"
 
 #include <cmath>
 
@@ -79,60 +78,21 @@ namespace compax::dem
 
   namespace
   {
-    /// A pair's response with its normal and centre distance.
-    struct PairForce
-    {
-      Eigen::Vector3d normal;
-      double          distance;
-      ContactResponse response;
+    /// The law's response of a die's pair contact at overlap gamma.
+    const auto pair_response = [](const PairContact &c, const double gamma) {
+      return contact_response(c.law, gamma, c.history);
     };
-
-    /// The response of pair @p c; false for a pair that contributes
-    /// nothing (virgin and apart: most candidates of the list).
-    inline bool
-    pair_force(const ParticleSystem &p, const PairContact &c, PairForce &f)
-    {
-      const Eigen::Vector3d d     = p.positions[c.i] - p.positions[c.j];
-      const double          dist  = d.norm();
-      const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
-      if (c.history.a_p == 0.0
-          && (gamma <= 0.0 || gamma < ContactAssembler::touch_tolerance * dist))
-        return false;
-      f.response = contact_response(c.law, gamma, c.history);
-      if (f.response.force == 0.0 && f.response.stiffness == 0.0)
-        return false;
-      f.normal   = d / dist;
-      f.distance = dist;
-      return true;
-    }
-
-    /// The loaded-contact count and force sum of ContactSums.
-    inline void
-    count_loaded(const ContactResponse &r,
-                 std::size_t           &n_loaded,
-                 double                &sum_abs)
-    {
-      if (r.force != 0.0)
-        {
-          ++n_loaded;
-          sum_abs += std::abs(r.force);
-        }
-    }
   } // namespace
 
   void
   ContactAssembler::add_pair_forces_in_parallel(const Bed       &bed,
                                                 Eigen::VectorXd &F,
-                                                std::size_t     &n_loaded,
-                                                double          &sum_abs)
+                                                LoadedContacts  &loaded)
   {
-    const ParticleSystem &p       = bed.particles;
-    const auto           &pairs   = bed.contacts.pairs;
-    const int             threads = omp_get_max_threads();
-    const auto            size    = static_cast<Eigen::Index>(F.size());
+    const int  threads = omp_get_max_threads();
+    const auto size    = static_cast<Eigen::Index>(F.size());
     thread_forces.resize(threads);
-    thread_loaded.assign(threads, 0);
-    thread_sum_abs.assign(threads, 0.0);
+    thread_loaded.assign(threads, LoadedContacts{});
     for (Eigen::VectorXd &f : thread_forces)
       f.resize(size);
 #pragma omp parallel num_threads(threads)
@@ -142,28 +102,13 @@ namespace compax::dem
       Ft.setZero();
       // Thread-local counters: neighbouring slots of one vector would
       // share a cache line and serialise the threads.
-      std::size_t loaded = 0;
-      double      sum    = 0.0;
-      const auto  n      = static_cast<std::int64_t>(pairs.size());
+      LoadedContacts loaded_t;
+      const auto     n = static_cast<std::int64_t>(bed.contacts.pairs.size());
 #pragma omp for schedule(static)
       for (std::int64_t k = 0; k < n; ++k)
-        {
-          PairForce f;
-          if (!pair_force(p, pairs[k], f))
-            continue;
-          scatter_pair(Ft,
-                       nullptr,
-                       pairs[k].i,
-                       pairs[k].j,
-                       0,
-                       0,
-                       f.normal,
-                       f.distance,
-                       f.response);
-          count_loaded(f.response, loaded, sum);
-        }
-      thread_loaded[t]  = loaded;
-      thread_sum_abs[t] = sum;
+        add_pair_terms<false>(
+          bed, k, pair_response, pattern, Ft, nullptr, loaded_t);
+      thread_loaded[t] = loaded_t;
       // The loop's implicit barrier: every thread's vector is complete.
 #pragma omp for schedule(static)
       for (Eigen::Index i = 0; i < size; ++i)
@@ -171,10 +116,7 @@ namespace compax::dem
           F[i] += thread_forces[s][i];
     }
     for (int t = 0; t < threads; ++t)
-      {
-        n_loaded += thread_loaded[t];
-        sum_abs += thread_sum_abs[t];
-      }
+      loaded.add(thread_loaded[t]);
   }
 
   ContactSums
@@ -209,29 +151,16 @@ namespace compax::dem
   {
     const ParticleSystem &p = bed.particles;
     F.setZero(3 * p.size());
-    ContactSums sums;
-    double      sum_abs = 0.0;
+    ContactSums    sums;
+    LoadedContacts loaded;
 
-    const auto &pairs = bed.contacts.pairs;
-    if (!with_stiffness && pairs.size() >= parallel_pairs)
-      add_pair_forces_in_parallel(bed, F, sums.n_loaded, sum_abs);
+    const std::size_t n_pairs = bed.contacts.pairs.size();
+    if (!with_stiffness && n_pairs >= parallel_pairs)
+      add_pair_forces_in_parallel(bed, F, loaded);
     else
-      for (std::size_t k = 0; k < pairs.size(); ++k)
-        {
-          PairForce f;
-          if (!pair_force(p, pairs[k], f))
-            continue;
-          scatter_pair(F,
-                       with_stiffness ? K : nullptr,
-                       pairs[k].i,
-                       pairs[k].j,
-                       with_stiffness ? pattern.ij(k) : 0,
-                       with_stiffness ? pattern.ji(k) : 0,
-                       f.normal,
-                       f.distance,
-                       f.response);
-          count_loaded(f.response, sums.n_loaded, sum_abs);
-        }
+      for (std::size_t k = 0; k < n_pairs; ++k)
+        add_pair_terms<with_stiffness>(
+          bed, k, pair_response, pattern, F, K, loaded);
 
     for (const WallContact &c : bed.contacts.walls)
       {
@@ -244,11 +173,7 @@ namespace compax::dem
           continue;
         F.template segment<3>(3 * c.i) -= r.force * g.normal;
         sums.wall_force[static_cast<int>(c.wall)] += r.force;
-        if (r.force != 0.0)
-          {
-            ++sums.n_loaded;
-            sum_abs += std::abs(r.force);
-          }
+        loaded.add(r);
         if constexpr (with_stiffness)
           {
             double *blk = K->block(K->diagonal_slot(c.i));
@@ -269,8 +194,7 @@ namespace compax::dem
               }
           }
       }
-    if (sums.n_loaded > 0)
-      sums.mean_force = sum_abs / sums.n_loaded;
+    loaded.report(sums);
     return sums;
   }
 

@@ -4,6 +4,7 @@
 #include "dem/solver/block_sparse_matrix.h"
 #include "dem/solver/contact_sums.h"
 #include "dem/solver/pair_pattern.h"
+#include "dem/solver/pair_terms.h"
 
 #include <Eigen/Core>
 
@@ -42,15 +43,6 @@ namespace compax::dem
   class ContactAssembler
   {
   public:
-    /**
-     * Virgin contacts whose overlap is below this fraction of the centre
-     * distance are treated as touching without force: such overlaps are
-     * round-off of the coordinates (a deposited bed touches exactly), and
-     * their forces (~1e-12 N for R = 220 um) would otherwise set the
-     * scale of the convergence test of an unloaded bed.
-     */
-    static constexpr double touch_tolerance = 0.0;
-
     /// F only (refreshes the contact list if needed).
     ContactSums
     residual(Bed &bed, const ContactModel &model, Eigen::VectorXd &F);
@@ -81,14 +73,12 @@ namespace compax::dem
     void
     add_pair_forces_in_parallel(const Bed       &bed,
                                 Eigen::VectorXd &F,
-                                std::size_t     &n_loaded,
-                                double          &sum_abs);
+                                LoadedContacts  &loaded);
 
     PairPattern pattern;
     /// Per-thread force vectors and sums of add_pair_forces_in_parallel,
     /// kept between calls so that a residual allocates nothing.
     std::vector<Eigen::VectorXd> thread_forces;
-    std::vector<std::size_t>     thread_loaded;
-    std::vector<double>          thread_sum_abs;
+    std::vector<LoadedContacts>  thread_loaded;
   };
 } // namespace compax::dem

@@ -4,6 +4,7 @@
 #include "dem/neighbors/cell_grid.h"
 #include "dem/particles/particle_system.h"
 #include "dem/solver/contact_model.h"
+#include "dem/solver/verlet_list.h"
 #include "dem/walls/die_walls.h"
 
 #include <cstdint>
@@ -46,7 +47,7 @@ namespace compax::dem
    * a pair that has left the list if it has a history (a_p > 0): plastic
    * deformation is permanent even when two particles separate.
    */
-  class ContactSet
+  class ContactSet : public VerletList
   {
   public:
     /// @param skin Verlet skin [m], e.g. 0.3 R
@@ -54,18 +55,6 @@ namespace compax::dem
 
     std::vector<PairContact> pairs;
     std::vector<WallContact> walls;
-
-    double
-    skin() const
-    {
-      return skin_;
-    }
-
-    void
-    set_skin(double skin)
-    {
-      skin_ = skin;
-    }
 
     /// Rebuilds the list if the displacement criterion asks for it;
     /// returns whether it did.
@@ -80,13 +69,6 @@ namespace compax::dem
             const DieWalls       &walls,
             const ContactModel   &model);
 
-    /// Increases at every rebuild (stiffness patterns compare it).
-    std::uint64_t
-    revision() const
-    {
-      return revision_;
-    }
-
     /// Applies Eq. (13) to every contact at the current (converged)
     /// positions, with forces resolved to `resolution` [N] (see
     /// update_history()); the only place where histories change.
@@ -96,23 +78,16 @@ namespace compax::dem
                      double                resolution = 0.0);
 
   private:
-    double                       skin_;
-    std::uint64_t                revision_ = 0;
-    bool                         built     = false;
-    CellGrid                     grid;
-    std::vector<ParticlePair>    candidates;
-    std::vector<PairContact>     old_pairs;
-    std::vector<WallContact>     old_walls;
-    std::vector<Eigen::Vector3d> reference_positions;
-    double                       reference_walls[n_walls] = {0.0, 0.0, 0.0};
-  };
+    /// A wall contact's place in the list: (particle, wall).
+    using WallKey = std::pair<std::uint32_t, int>;
 
-  /// Whether a contact keeps internal variables (plastic radius or bond).
-  inline bool
-  has_history(const ContactHistory &h)
-  {
-    return h.a_p > 0.0 || h.a_B > 0.0;
-  }
+    CellGrid                  grid;
+    std::vector<ParticlePair> candidates;
+    std::vector<WallKey>      wall_candidates;
+    std::vector<PairContact>  old_pairs;
+    std::vector<WallContact>  old_walls;
+    double                    reference_walls[n_walls] = {0.0, 0.0, 0.0};
+  };
 
   /**
    * Applies Eq. (13) to one contact at overlap gamma and counts the bond
@@ -129,11 +104,6 @@ namespace compax::dem
                  ContactHistory               &history,
                  BondChanges                  &changes,
                  double                        resolution = 0.0);
-
-  /// A new revision number for a rebuilt contact list, unique across all
-  /// lists, so that a restored copy never aliases a newer list.
-  std::uint64_t
-  next_contact_list_revision();
 
   /// Overlap gamma = R_i + R_j - |x_i - x_j| of a pair contact [m].
   inline double

@@ -1,6 +1,7 @@
 #include "dem/solver/trust_region_newton.h"
 
 #include "dem/solver/die_bed_system.h"
+#include "dem/solver/step_limits.h"
 
 #include <algorithm>
 #include <chrono>
@@ -34,31 +35,6 @@ namespace compax::dem
   TrustRegionNewton::TrustRegionNewton(const EquilibriumOptions options)
       : opts(options)
   {
-  }
-
-  bool
-  TrustRegionNewton::limit_to_gaps(const EquilibriumSystem &system)
-  {
-    const std::size_t n = system.n_particles();
-    factor.setOnes(n);
-    bool clipped = system.limit_closing(s, factor);
-    // No particle moves farther than a quarter of the Verlet skin (the
-    // contact list stays valid); capping the few that would, instead of
-    // shrinking the trust region of the whole bed, keeps the others' steps.
-    const double cap = 0.25 * system.skin();
-    for (std::size_t i = 0; i < n; ++i)
-      {
-        const double len = s.segment<3>(3 * i).norm();
-        if (len * factor[i] > cap)
-          {
-            factor[i] = cap / len;
-            clipped   = true;
-          }
-      }
-    if (clipped)
-      for (std::size_t i = 0; i < n; ++i)
-        s.segment<3>(3 * i) *= factor[i];
-    return clipped;
   }
 
   EquilibriumResult
@@ -152,7 +128,7 @@ namespace compax::dem
         ++result.iterations;
         double pred = sub.predicted_decrease, step_norm = sub.step_norm;
         s_full = s;
-        if (opts.limit_to_gaps && limit_to_gaps(system))
+        if (opts.limit_to_gaps && limit_step_to_gaps(system, s, factor))
           {
             // The clipped step's own model decrease and length; if clipping
             // single particles lost the model decrease, shorten the whole

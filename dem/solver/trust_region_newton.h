@@ -136,11 +136,6 @@ namespace compax::dem
     }
 
   private:
-    /// Applies EquilibriumOptions::limit_to_gaps to the step s; returns
-    /// whether it changed it.
-    bool
-    limit_to_gaps(const EquilibriumSystem &system);
-
     EquilibriumOptions        opts;
     ContactAssembler          assembler;
     BlockSparseMatrix         K;
