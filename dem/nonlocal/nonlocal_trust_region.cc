@@ -39,28 +39,21 @@ namespace compax::dem
   {
     NonlocalTrustRegionResult result;
     const double              R = system.mean_radius();
-    const double              length
-      = R * std::sqrt(static_cast<double>(system.n_particles()));
-    const double max_radius = opts.max_radius * length;
-    if (radius <= 0.0 || opts.reset_radius)
-      radius = opts.initial_radius * length;
-    radius
-      = std::clamp(radius, 1e-3 * opts.initial_radius * length, max_radius);
+    radius.start(system,
+                 opts.initial_radius,
+                 opts.max_radius,
+                 opts.reset_radius);
+    const double length = radius.length();
+    trial.forget();
 
     ContactSums sums;
     const auto  relative = [&]() {
-      if (!F.allFinite())
-        return std::numeric_limits<double>::infinity();
-      const double fmax = max_particle_norm(F);
-      return sums.mean_force > 0.0
-                ? fmax / sums.mean_force
-                : (fmax == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
+      return F.allFinite() ? relative_residual(F, sums)
+                            : std::numeric_limits<double>::infinity();
     };
     const auto assemble = [&]() { sums = system.assemble(F, K); };
 
     assemble();
-    double       last_step = 0.0;
-    bool         stepped   = false;
     const double F0        = std::max(F.norm(), 1e-300);
     double       best      = std::numeric_limits<double>::infinity();
     int          best_at   = 0;
@@ -76,7 +69,7 @@ namespace compax::dem
             best_at = it;
           }
         const bool force_ok = result.relative_residual <= opts.force_tolerance;
-        if (force_ok && (!stepped || last_step <= opts.step_tolerance * R))
+        if (force_ok && trial.last_move() <= opts.step_tolerance * R)
           {
             result.converged = true;
             break;
@@ -122,9 +115,9 @@ namespace compax::dem
             result.relative_residual = relative();
             best                     = result.relative_residual;
             best_at                  = it;
-            radius                   = opts.initial_radius * length;
-            stepped                  = false;
-            krylov_at                = std::numeric_limits<double>::infinity();
+            radius.restart();
+            trial.forget();
+            krylov_at = std::numeric_limits<double>::infinity();
             if (!std::isfinite(result.relative_residual))
               break;
           }
@@ -137,7 +130,7 @@ namespace compax::dem
         const SteihaugResult sub = cg.solve(FrozenAngleJacobian{system},
                                             M,
                                             F,
-                                            radius,
+                                            radius.value(),
                                             eta,
                                             opts.max_cg_iterations,
                                             s);
@@ -161,43 +154,28 @@ namespace compax::dem
                 result.converged = true;
                 break;
               }
-            radius *= 0.25;
+            radius.set(0.25 * radius.value());
             ++result.rejected_steps;
-            if (radius < 1e-12 * R)
+            if (radius.value() < 1e-12 * R)
               break;
             continue;
           }
 
-        auto x = system.coordinates();
-        x_old  = x;
-        F_old  = F;
-        x += s;
-        const ContactSums old_sums = sums;
-        assemble();
-        const double actual = -0.5 * (F_old + F).dot(s);
-        const double rho    = actual / pred;
+        const double rho = trial.take(system, s, F, pred, assemble);
         if (opts.trace)
           *opts.trace << "  tr it " << it << " rel " << result.relative_residual
-                      << " radius " << radius / length << " cg "
+                      << " radius " << radius.value() / length << " cg "
                       << sub.iterations << " boundary " << sub.on_boundary
                       << " rho " << rho << " step " << max_particle_norm(s) / R
                       << '\n';
-        if (rho < 0.25 || !std::isfinite(rho))
-          radius = 0.25 * step_norm;
-        else if (rho > 0.75 && sub.on_boundary)
-          radius = std::min(2.0 * radius, max_radius);
-        if (rho > 0.05 && F.allFinite())
-          {
-            stepped   = true;
-            last_step = max_particle_norm(s);
-          }
-        else
+        // A non-finite ratio counts as a poor prediction.
+        radius.update(std::isfinite(rho) ? rho : 0.0,
+                      step_norm,
+                      sub.on_boundary);
+        if (!trial.keep_or_undo(rho, F.allFinite(), system, s, assemble))
           {
             ++result.rejected_steps;
-            x    = x_old;
-            sums = old_sums;
-            assemble();
-            if (radius < 1e-12 * length)
+            if (radius.value() < 1e-12 * length)
               break;
           }
       }

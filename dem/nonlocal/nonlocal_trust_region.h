@@ -5,6 +5,8 @@
 #include "dem/solver/block_sparse_matrix.h"
 #include "dem/solver/fire_relaxation.h"
 #include "dem/solver/steihaug_cg.h"
+#include "dem/solver/trial_step.h"
+#include "dem/solver/trust_radius.h"
 
 #include <Eigen/Core>
 
@@ -102,7 +104,8 @@ namespace compax::dem
     BlockSparseMatrix          K;
     BlockJacobiPreconditioner  M;
     SteihaugCG                 cg;
-    Eigen::VectorXd            F, F_old, x_old, s, Hp, Ms, factor;
-    double                     radius = -1.0;
+    TrialStep                  trial;
+    Eigen::VectorXd            F, s, Hp, Ms, factor;
+    TrustRadius                radius;
   };
 } // namespace compax::dem

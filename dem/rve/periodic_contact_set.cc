@@ -21,42 +21,28 @@ namespace compax::dem
     }
   } // namespace
 
-  PeriodicContactSet::PeriodicContactSet(const double skin)
-      : VerletList(skin)
-      , reference_lattice(Eigen::Matrix3d::Identity())
-  {
-  }
-
   bool
-  PeriodicContactSet::update(const ParticleSystem &particles,
-                             const PeriodicCell   &cell,
-                             const ContactModel   &model)
+  PeriodicContactSet::moved_too_far(const ParticleSystem &particles,
+                                    const PeriodicCell   &cell) const
   {
-    bool needed = must_rebuild(particles);
-    if (!needed)
-      {
-        // Displacements relative to the affine motion of the cell since the
-        // build, and the cell's own change acting on a candidate branch.
-        const Eigen::Matrix3d A = cell.lattice() * reference_lattice.inverse();
-        const std::vector<Eigen::Vector3d> &x0     = built_positions();
-        double                              max_sq = 0.0;
-        for (std::size_t i = 0; i < particles.size(); ++i)
-          max_sq = std::max(max_sq,
-                            (particles.positions[i] - A * x0[i]).squaredNorm());
-        const double branch = 2.0 * particles.max_radius() + skin();
-        needed              = 2.0 * std::sqrt(max_sq)
-                   + spectral_norm(A - Eigen::Matrix3d::Identity()) * branch
-                 >= skin();
-      }
-    if (needed)
-      rebuild(particles, cell, model);
-    return needed;
+    // Displacements relative to the affine motion of the cell since the
+    // build, and the cell's own change acting on a candidate branch.
+    const Eigen::Matrix3d A = cell.lattice() * reference_lattice.inverse();
+    const std::vector<Eigen::Vector3d> &x0     = built_positions();
+    double                              max_sq = 0.0;
+    for (std::size_t i = 0; i < particles.size(); ++i)
+      max_sq
+        = std::max(max_sq, (particles.positions[i] - A * x0[i]).squaredNorm());
+    const double branch = 2.0 * particles.max_radius() + skin();
+    return 2.0 * std::sqrt(max_sq)
+             + spectral_norm(A - Eigen::Matrix3d::Identity()) * branch
+           >= skin();
   }
 
   void
-  PeriodicContactSet::rebuild(const ParticleSystem &particles,
-                              const PeriodicCell   &cell,
-                              const ContactModel   &model)
+  PeriodicContactSet::find_contacts(const ParticleSystem &particles,
+                                    const PeriodicCell   &cell,
+                                    const ContactModel   &model)
   {
     const double needed_width = 2.0 * particles.max_radius() + skin();
     for (int axis = 0; axis < 3; ++axis)
@@ -69,7 +55,6 @@ namespace compax::dem
           + " m); use more particles or a larger cell");
     grid.find_pairs(
       cell, particles.positions, particles.radii, skin(), candidates);
-
     merge_candidates(
       candidates,
       pairs,
@@ -87,23 +72,6 @@ namespace compax::dem
                                               particles.radii[ij.j]),
                                ContactHistory{}};
       });
-
     reference_lattice = cell.lattice();
-    record_build(particles);
-  }
-
-  BondChanges
-  PeriodicContactSet::update_histories(const ParticleSystem &particles,
-                                       const PeriodicCell   &cell,
-                                       const double          resolution)
-  {
-    BondChanges changes;
-    for (PeriodicContact &c : pairs)
-      {
-        const double gamma = particles.radii[c.i] + particles.radii[c.j]
-                             - branch_vector(particles, cell, c).norm();
-        update_history(c.law, gamma, c.history, changes, resolution);
-      }
-    return changes;
   }
 } // namespace compax::dem

@@ -5,62 +5,27 @@
 
 namespace compax::dem
 {
-  void
-  update_history(const BondedElastoplasticLaw &law,
-                 const double                  gamma,
-                 ContactHistory               &history,
-                 BondChanges                  &changes,
-                 const double                  resolution)
-  {
-    if (resolution > 0.0)
-      {
-        const ContactResponse r = law.response(gamma, history.a_p, history.a_B);
-        if (r.contact_radius > history.a_p && std::abs(r.force) <= resolution)
-          return;
-      }
-    const ContactHistory next = law.updated_history(gamma, history);
-    if (history.a_B == 0.0 && next.a_B > 0.0)
-      ++changes.formed;
-    else if (history.a_B > 0.0 && next.a_B == 0.0)
-      ++changes.broken;
-    history = next;
-  }
-
-  ContactSet::ContactSet(const double skin)
-      : VerletList(skin)
-  {
-  }
-
   bool
-  ContactSet::update(const ParticleSystem &particles,
-                     const DieWalls       &die,
-                     const ContactModel   &model)
+  ContactSet::moved_too_far(const ParticleSystem &particles,
+                            const DieWalls       &die) const
   {
-    bool needed = must_rebuild(particles);
-    if (!needed)
-      {
-        const std::vector<Eigen::Vector3d> &x0     = built_positions();
-        double                              max_sq = 0.0;
-        for (std::size_t i = 0; i < particles.size(); ++i)
-          max_sq
-            = std::max(max_sq, (particles.positions[i] - x0[i]).squaredNorm());
-        const double max_move  = std::sqrt(max_sq);
-        double       wall_move = 0.0;
-        for (int w = 0; w < n_walls; ++w)
-          wall_move = std::max(wall_move,
-                               std::abs(die.coordinate(static_cast<Wall>(w))
-                                        - reference_walls[w]));
-        needed = 2.0 * max_move >= skin() || max_move + wall_move >= skin();
-      }
-    if (needed)
-      rebuild(particles, die, model);
-    return needed;
+    const std::vector<Eigen::Vector3d> &x0     = built_positions();
+    double                              max_sq = 0.0;
+    for (std::size_t i = 0; i < particles.size(); ++i)
+      max_sq = std::max(max_sq, (particles.positions[i] - x0[i]).squaredNorm());
+    const double max_move  = std::sqrt(max_sq);
+    double       wall_move = 0.0;
+    for (int w = 0; w < n_walls; ++w)
+      wall_move = std::max(wall_move,
+                           std::abs(die.coordinate(static_cast<Wall>(w))
+                                    - reference_walls[w]));
+    return 2.0 * max_move >= skin() || max_move + wall_move >= skin();
   }
 
   void
-  ContactSet::rebuild(const ParticleSystem &particles,
-                      const DieWalls       &die,
-                      const ContactModel   &model)
+  ContactSet::find_contacts(const ParticleSystem &particles,
+                            const DieWalls       &die,
+                            const ContactModel   &model)
   {
     grid.find_pairs(particles.positions, particles.radii, skin(), candidates);
     merge_candidates(
@@ -98,16 +63,15 @@ namespace compax::dem
         return WallKey(c.i, static_cast<int>(c.wall));
       },
       [&](const WallKey &iw) {
-        return WallContact{iw.first,
-                           static_cast<Wall>(iw.second),
-                           model.wall_law(particles.materials[iw.first],
-                                          particles.radii[iw.first]),
+        const auto [i, w] = iw;
+        return WallContact{i,
+                           static_cast<Wall>(w),
+                           model.wall_law(particles.materials[i],
+                                          particles.radii[i]),
                            ContactHistory{}};
       });
-
     for (int w = 0; w < n_walls; ++w)
       reference_walls[w] = die.coordinate(static_cast<Wall>(w));
-    record_build(particles);
   }
 
   BondChanges
@@ -115,17 +79,14 @@ namespace compax::dem
                                const DieWalls       &die,
                                const double          resolution)
   {
-    BondChanges changes;
-    for (PairContact &c : pairs)
-      update_history(
-        c.law, pair_overlap(particles, c), c.history, changes, resolution);
+    BondChanges changes
+      = VerletList::update_histories(particles, die, resolution);
     for (WallContact &c : walls)
-      update_history(
-        c.law,
-        die.gap(c.wall, particles.positions[c.i], particles.radii[c.i]).overlap,
-        c.history,
-        changes,
-        resolution);
+      update_history(c.law,
+                     contact_overlap(particles, die, c),
+                     c.history,
+                     changes,
+                     resolution);
     return changes;
   }
 } // namespace compax::dem

@@ -96,17 +96,4 @@ namespace compax::dem
     const double disc = std::sqrt(std::max(sp * sp - pp * c, 0.0));
     return (-sp + disc) / pp;
   }
-
-  SteihaugResult
-  SteihaugCG::solve(const BlockSparseMatrix         &K,
-                    const BlockJacobiPreconditioner &M,
-                    const Eigen::VectorXd           &g,
-                    const double                     radius,
-                    const double                     relative_tolerance,
-                    const int                        max_iterations,
-                    Eigen::VectorXd                 &s)
-  {
-    return solve<BlockSparseMatrix>(
-      K, M, g, radius, relative_tolerance, max_iterations, s);
-  }
 } // namespace compax::dem

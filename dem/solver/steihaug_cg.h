@@ -80,16 +80,6 @@ namespace compax::dem
           int                              max_iterations,
           Eigen::VectorXd                 &s);
 
-    /// The assembled stiffness (instantiated once, in steihaug_cg.cc).
-    SteihaugResult
-    solve(const BlockSparseMatrix         &K,
-          const BlockJacobiPreconditioner &M,
-          const Eigen::VectorXd           &g,
-          double                           radius,
-          double                           relative_tolerance,
-          int                              max_iterations,
-          Eigen::VectorXd                 &s);
-
   private:
     Eigen::VectorXd r, z, p, Kp, Ms, Mp;
 

@@ -4,12 +4,10 @@
 
 namespace compax::dem
 {
-  void
-  VerletList::record_build(const ParticleSystem &particles)
+  std::uint64_t
+  next_contact_list_revision()
   {
     static std::atomic<std::uint64_t> counter{0};
-    reference_positions = particles.positions;
-    built               = true;
-    revision_           = ++counter;
+    return ++counter;
   }
 } // namespace compax::dem

@@ -1,7 +1,8 @@
 #pragma once
 
-#include "dem/contact/contact_response.h"
 #include "dem/particles/particle_system.h"
+#include "dem/solver/contact_model.h"
+#include "dem/solver/history_update.h"
 
 #include <Eigen/Core>
 
@@ -10,25 +11,33 @@
 
 namespace compax::dem
 {
-  /// Whether a contact keeps internal variables (plastic radius or bond).
-  inline bool
-  has_history(const ContactHistory &h)
-  {
-    return h.a_p > 0.0 || h.a_B > 0.0;
-  }
+  /// A new revision number for a rebuilt contact list, unique across all
+  /// lists, so that a restored copy never aliases a newer list.
+  std::uint64_t
+  next_contact_list_revision();
 
   /**
-   * The bookkeeping the die's ContactSet and the periodic cell's
-   * PeriodicContactSet share as Verlet lists with a skin: the skin, the
-   * particle positions at the last build (from which the displacement
-   * criterion measures), and a revision number that stiffness patterns
-   * compare. When a list is due for a rebuild is each set's own criterion.
+   * The candidate contacts of a bed (a Verlet list with a skin) together
+   * with their internal variables (a_p, a_B), as the die's ContactSet and
+   * the periodic cell's PeriodicContactSet keep them. The list is rebuilt
+   * when the particles, relative to `Boundary` (the die's walls, the
+   * cell's lattice), could have moved two surfaces within the skin since
+   * the last build; a rebuild keeps the history of every surviving
+   * contact, and keeps a contact that has left the list if it has a
+   * history: plastic deformation is permanent even when two particles
+   * separate.
+   *
+   * `Set` derives from VerletList<Set, Boundary>, holds `pairs` and says
+   * when the particles moved too far (moved_too_far()) and how the
+   * candidates are found (find_contacts(), by merge_candidates()); the
+   * overlap of a contact is contact_overlap(particles, boundary, contact).
    */
+  template <typename Set, typename Boundary>
   class VerletList
   {
   public:
     /// @param skin Verlet skin [m], e.g. 0.3 R
-    explicit VerletList(const double skin)
+    explicit VerletList(const double skin = 0.0)
         : skin_(skin)
     {
     }
@@ -45,24 +54,59 @@ namespace compax::dem
       skin_ = skin;
     }
 
-    /// Increases at every rebuild (stiffness patterns compare it); unique
-    /// across all lists, so that a restored copy never aliases a newer
-    /// list.
+    /// Increases at every rebuild (stiffness patterns compare it).
     std::uint64_t
     revision() const
     {
       return revision_;
     }
 
-  protected:
-    /// Whether a rebuild is due whatever the displacements: the list was
-    /// never built, or the number of particles changed.
+    /// Rebuilds the list if the displacement criterion asks for it;
+    /// returns whether it did.
     bool
-    must_rebuild(const ParticleSystem &particles) const
+    update(const ParticleSystem &particles,
+           const Boundary       &boundary,
+           const ContactModel   &model)
     {
-      return !built || reference_positions.size() != particles.size();
+      const bool needed = !built
+                          || reference_positions.size() != particles.size()
+                          || set().moved_too_far(particles, boundary);
+      if (needed)
+        rebuild(particles, boundary, model);
+      return needed;
     }
 
+    /// Rebuilds the list unconditionally.
+    void
+    rebuild(const ParticleSystem &particles,
+            const Boundary       &boundary,
+            const ContactModel   &model)
+    {
+      set().find_contacts(particles, boundary, model);
+      reference_positions = particles.positions;
+      built               = true;
+      revision_           = next_contact_list_revision();
+    }
+
+    /// Applies Eq. (13) to every pair contact at the current (converged)
+    /// positions, with forces resolved to `resolution` [N] (see
+    /// update_history()); the only place where histories change.
+    BondChanges
+    update_histories(const ParticleSystem &particles,
+                     const Boundary       &boundary,
+                     const double          resolution = 0.0)
+    {
+      BondChanges changes;
+      for (auto &c : set().pairs)
+        update_history(c.law,
+                       contact_overlap(particles, boundary, c),
+                       c.history,
+                       changes,
+                       resolution);
+      return changes;
+    }
+
+  protected:
     /// The particle positions at the last build [m].
     const std::vector<Eigen::Vector3d> &
     built_positions() const
@@ -70,11 +114,19 @@ namespace compax::dem
       return reference_positions;
     }
 
-    /// Records a rebuild at the particles' current positions.
-    void
-    record_build(const ParticleSystem &particles);
-
   private:
+    Set &
+    set()
+    {
+      return static_cast<Set &>(*this);
+    }
+
+    const Set &
+    set() const
+    {
+      return static_cast<const Set &>(*this);
+    }
+
     double                       skin_;
     std::uint64_t                revision_ = 0;
     bool                         built     = false;
@@ -82,12 +134,11 @@ namespace compax::dem
   };
 
   /**
-   * The rebuild of a Verlet list that keeps histories: merges the sorted
-   * keys of the new candidates into `contacts`, the sorted contacts of
-   * the last build. A candidate already listed keeps its contact (law and
-   * internal variables), a new one is `make(key)`, and a contact that left
-   * the candidates stays if it has a history: plastic deformation is
-   * permanent even when two particles separate. `key(contact)` orders the
+   * The rebuild of a list that keeps histories: merges the sorted keys of
+   * the new candidates into `contacts`, the sorted contacts of the last
+   * build. A candidate already listed keeps its contact (law and internal
+   * variables), a new one is `make(key)`, and a contact that left the
+   * candidates stays if it has a history. `key(contact)` orders the
    * contacts as the candidates; `old` is scratch, kept to avoid
    * allocations.
    */
