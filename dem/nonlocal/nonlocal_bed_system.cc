@@ -2,8 +2,8 @@
 
 #include "dem/contact/pair_properties.h"
 #include "dem/numbers.h"
-#include "dem/solver/die_bed_system.h"
 #include "dem/solver/pair_block.h"
+#include "dem/solver/step_limits.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,6 @@
 #include "dem/nonlocal/nonlocal_trust_region.h"
 
+#include "dem/solver/step_limits.h"
 #include "dem/solver/trust_region_newton.h"
 
 #include <algorithm>
@@ -9,6 +10,22 @@
 
 namespace compax::dem
 {
+  namespace
+  {
+    /// The model Hessian of NonlocalTrustRegion, the frozen-angle Jacobian
+    /// H of the system, as the operator of SteihaugCG.
+    struct FrozenAngleJacobian
+    {
+      NonlocalBedSystem &system;
+
+      void
+      vmult(Eigen::VectorXd &Hv, const Eigen::VectorXd &v) const
+      {
+        system.apply_jacobian(v, Hv, false);
+      }
+    };
+  } // namespace
+
   NonlocalTrustRegion::NonlocalTrustRegion(
     const NonlocalTrustRegionOptions options,
     const NewtonKrylovOptions        krylov_options)
@@ -17,126 +34,26 @@ namespace compax::dem
   {
   }
 
-  double
-  NonlocalTrustRegion::to_boundary(const Eigen::VectorXd &dir)
-  {
-    M.multiply(Ms, s);
-    M.multiply(Mp, dir);
-    const double ss = s.dot(Ms), sp = s.dot(Mp), pp = dir.dot(Mp);
-    if (!(pp > 0.0))
-      return 0.0;
-    const double disc = std::max(0.0, sp * sp + pp * (radius * radius - ss));
-    return (-sp + std::sqrt(disc)) / pp;
-  }
-
-  NonlocalTrustRegion::CgResult
-  NonlocalTrustRegion::steihaug(NonlocalBedSystem &system,
-                                const double       relative_tolerance)
-  {
-    const Eigen::Index n = F.size();
-    s.setZero(n);
-    r.resize(n);
-    z.resize(n);
-    p.resize(n);
-    Hp.resize(n);
-    Ms.resize(n);
-    Mp.resize(n);
-    CgResult result;
-    // Work with H / scale so that the model agrees with |s|_M.
-    const double scale = M.scale();
-    r                  = F / scale;
-    M.solve(z, r);
-    p                 = -z;
-    double       rz   = r.dot(z);
-    const double stop = relative_tolerance * relative_tolerance * rz;
-    if (rz > 0.0)
-      for (int it = 0; it < opts.max_cg_iterations; ++it)
-        {
-          result.iterations = it + 1;
-          system.apply_jacobian(p, Hp, false);
-          Hp /= scale;
-          const double curvature = p.dot(Hp);
-          if (!(curvature > 0.0))
-            {
-              s += to_boundary(p) * p;
-              result.on_boundary = true;
-              break;
-            }
-          const double alpha = rz / curvature;
-          M.multiply(Ms, s);
-          M.multiply(Mp, p);
-          const double ss = s.dot(Ms), sp = s.dot(Mp), pp = p.dot(Mp);
-          if (ss + 2.0 * alpha * sp + alpha * alpha * pp >= radius * radius)
-            {
-              s += to_boundary(p) * p;
-              result.on_boundary = true;
-              break;
-            }
-          s += alpha * p;
-          r += alpha * Hp;
-          M.solve(z, r);
-          const double rz_new = r.dot(z);
-          if (rz_new <= stop)
-            break;
-          p  = -z + (rz_new / rz) * p;
-          rz = rz_new;
-        }
-    system.apply_jacobian(s, Hp, false);
-    result.predicted_decrease = -(F.dot(s) + 0.5 * s.dot(Hp));
-    M.multiply(Ms, s);
-    result.step_norm = std::sqrt(std::max(s.dot(Ms), 0.0));
-    return result;
-  }
-
-  bool
-  NonlocalTrustRegion::clip(const NonlocalBedSystem &system)
-  {
-    const std::size_t n = system.n_particles();
-    factor.setOnes(n);
-    bool         clipped = system.limit_closing(s, factor);
-    const double cap     = 0.25 * system.skin();
-    for (std::size_t i = 0; i < n; ++i)
-      {
-        const double len = s.segment<3>(3 * i).norm();
-        if (len * factor[i] > cap)
-          {
-            factor[i] = cap / len;
-            clipped   = true;
-          }
-      }
-    if (clipped)
-      for (std::size_t i = 0; i < n; ++i)
-        s.segment<3>(3 * i) *= factor[i];
-    return clipped;
-  }
-
   NonlocalTrustRegionResult
   NonlocalTrustRegion::solve(NonlocalBedSystem &system)
   {
     NonlocalTrustRegionResult result;
     const double              R = system.mean_radius();
-    const double              length
-      = R * std::sqrt(static_cast<double>(system.n_particles()));
-    const double max_radius = opts.max_radius * length;
-    if (radius <= 0.0 || opts.reset_radius)
-      radius = opts.initial_radius * length;
-    radius
-      = std::clamp(radius, 1e-3 * opts.initial_radius * length, max_radius);
+    radius.start(system,
+                 opts.initial_radius,
+                 opts.max_radius,
+                 opts.reset_radius);
+    const double length = radius.length();
+    trial.forget();
 
     ContactSums sums;
     const auto  relative = [&]() {
-      if (!F.allFinite())
-        return std::numeric_limits<double>::infinity();
-      const double fmax = max_particle_norm(F);
-      return sums.mean_force > 0.0
-                ? fmax / sums.mean_force
-                : (fmax == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
+      return F.allFinite() ? relative_residual(F, sums)
+                            : std::numeric_limits<double>::infinity();
     };
     const auto assemble = [&]() { sums = system.assemble(F, K); };
 
     assemble();
-    double       last_step = 0.0;
-    bool         stepped   = false;
     const double F0        = std::max(F.norm(), 1e-300);
     double       best      = std::numeric_limits<double>::infinity();
     int          best_at   = 0;
@@ -152,7 +69,7 @@ namespace compax::dem
             best_at = it;
           }
         const bool force_ok = result.relative_residual <= opts.force_tolerance;
-        if (force_ok && (!stepped || last_step <= opts.step_tolerance * R))
+        if (force_ok && trial.last_move() <= opts.step_tolerance * R)
           {
             result.converged = true;
             break;
@@ -198,9 +115,9 @@ namespace compax::dem
             result.relative_residual = relative();
             best                     = result.relative_residual;
             best_at                  = it;
-            radius                   = opts.initial_radius * length;
-            stepped                  = false;
-            krylov_at                = std::numeric_limits<double>::infinity();
+            radius.restart();
+            trial.forget();
+            krylov_at = std::numeric_limits<double>::infinity();
             if (!std::isfinite(result.relative_residual))
               break;
           }
@@ -210,14 +127,21 @@ namespace compax::dem
         M.compute(K, opts.preconditioner_floor);
         const double eta = std::min(opts.max_forcing, std::sqrt(F.norm() / F0))
                            * (force_ok ? 0.1 : 1.0);
-        const CgResult sub = steihaug(system, eta);
+        const SteihaugResult sub = cg.solve(FrozenAngleJacobian{system},
+                                            M,
+                                            F,
+                                            radius.value(),
+                                            eta,
+                                            opts.max_cg_iterations,
+                                            s);
         result.cg_iterations += sub.iterations;
         ++result.iterations;
         double pred = sub.predicted_decrease, step_norm = sub.step_norm;
-        if (clip(system))
+        if (limit_step_to_gaps(system, s, factor))
           {
             system.apply_jacobian(s, Hp, false);
             pred = -(F.dot(s) + 0.5 * s.dot(Hp));
+            Ms.resize(s.size());
             M.multiply(Ms, s);
             step_norm = std::sqrt(std::max(s.dot(Ms), 0.0));
           }
@@ -230,43 +154,28 @@ namespace compax::dem
                 result.converged = true;
                 break;
               }
-            radius *= 0.25;
+            radius.set(0.25 * radius.value());
             ++result.rejected_steps;
-            if (radius < 1e-12 * R)
+            if (radius.value() < 1e-12 * R)
               break;
             continue;
           }
 
-        auto x = system.coordinates();
-        x_old  = x;
-        F_old  = F;
-        x += s;
-        const ContactSums old_sums = sums;
-        assemble();
-        const double actual = -0.5 * (F_old + F).dot(s);
-        const double rho    = actual / pred;
+        const double rho = trial.take(system, s, F, pred, assemble);
         if (opts.trace)
           *opts.trace << "  tr it " << it << " rel " << result.relative_residual
-                      << " radius " << radius / length << " cg "
+                      << " radius " << radius.value() / length << " cg "
                       << sub.iterations << " boundary " << sub.on_boundary
                       << " rho " << rho << " step " << max_particle_norm(s) / R
                       << '\n';
-        if (rho < 0.25 || !std::isfinite(rho))
-          radius = 0.25 * step_norm;
-        else if (rho > 0.75 && sub.on_boundary)
-          radius = std::min(2.0 * radius, max_radius);
-        if (rho > 0.05 && F.allFinite())
-          {
-            stepped   = true;
-            last_step = max_particle_norm(s);
-          }
-        else
+        // A non-finite ratio counts as a poor prediction.
+        radius.update(std::isfinite(rho) ? rho : 0.0,
+                      step_norm,
+                      sub.on_boundary);
+        if (!trial.keep_or_undo(rho, F.allFinite(), system, s, assemble))
           {
             ++result.rejected_steps;
-            x    = x_old;
-            sums = old_sums;
-            assemble();
-            if (radius < 1e-12 * length)
+            if (radius.value() < 1e-12 * length)
               break;
           }
       }

@@ -5,6 +5,8 @@
 #include "dem/solver/block_sparse_matrix.h"
 #include "dem/solver/fire_relaxation.h"
 #include "dem/solver/steihaug_cg.h"
+#include "dem/solver/trial_step.h"
+#include "dem/solver/trust_radius.h"
 
 #include <Eigen/Core>
 
@@ -96,32 +98,14 @@ namespace compax::dem
     }
 
   private:
-    struct CgResult
-    {
-      double predicted_decrease = 0.0;
-      double step_norm          = 0.0;
-      int    iterations         = 0;
-      bool   on_boundary        = false;
-    };
-
-    /// Steihaug-Toint CG for min F.s + s.H s / 2, |s|_M <= radius.
-    CgResult
-    steihaug(NonlocalBedSystem &system, double relative_tolerance);
-
-    /// |s + tau p|_M = radius, tau >= 0.
-    double
-    to_boundary(const Eigen::VectorXd &p);
-
-    /// Per-particle clipping; returns whether s changed.
-    bool
-    clip(const NonlocalBedSystem &system);
-
     NonlocalTrustRegionOptions opts;
     NonlocalNewtonKrylov       krylov;
     FireRelaxation             fire;
     BlockSparseMatrix          K;
     BlockJacobiPreconditioner  M;
-    Eigen::VectorXd            F, F_old, x_old, s, r, z, p, Hp, Ms, Mp, factor;
-    double                     radius = -1.0;
+    SteihaugCG                 cg;
+    TrialStep                  trial;
+    Eigen::VectorXd            F, s, Hp, Ms, factor;
+    TrustRadius                radius;
   };
 } // namespace compax::dem

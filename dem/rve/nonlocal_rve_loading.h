@@ -2,6 +2,7 @@
 
 #include "dem/nonlocal/nonlocal_bed_system.h"
 #include "dem/nonlocal/nonlocal_trust_region.h"
+#include "dem/rve/cell_steps.h"
 #include "dem/rve/periodic_bed.h"
 #include "dem/rve/rve_loading.h"
 #include "dem/solver/substepping.h"
@@ -48,7 +49,7 @@ namespace compax::dem
    * and halved. The law has no internal variables: bed.contacts is left
    * alone (it holds no state of this law).
    */
-  class NonlocalRveLoading
+  class NonlocalRveLoading : public CellSteps<NonlocalRveLoading, RveStepResult>
   {
   public:
     explicit NonlocalRveLoading(NonlocalRveOptions options);
@@ -56,14 +57,6 @@ namespace compax::dem
     /// Deforms the cell to H = F_target H_0.
     RveStepResult
     deform_to(PeriodicBed &bed, const Eigen::Matrix3d &F_target);
-
-    /// F <- (I + eps) F, eps symmetric.
-    RveStepResult
-    apply_strain(PeriodicBed &bed, const Eigen::Matrix3d &strain_increment);
-
-    /// Equilibrium at the current cell.
-    RveStepResult
-    equilibrate(PeriodicBed &bed);
 
     /// Love-Weber stress of the elastic law at the cell's current state
     /// (tension positive) [Pa].
@@ -81,6 +74,8 @@ namespace compax::dem
     }
 
   private:
+    friend CellSteps<NonlocalRveLoading, RveStepResult>;
+
     bool
     substep(PeriodicBed &bed, const Eigen::Matrix3d &F, RveStepResult &total);
 

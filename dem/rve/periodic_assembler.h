@@ -1,67 +1,41 @@
 #pragma once
 
 #include "dem/rve/periodic_bed.h"
-#include "dem/solver/block_sparse_matrix.h"
 #include "dem/solver/contact_model.h"
-#include "dem/solver/contact_sums.h"
-#include "dem/solver/pair_pattern.h"
+#include "dem/solver/pair_assembler.h"
 
 #include <Eigen/Core>
 
-#include <cstdint>
-#include <vector>
+#include <limits>
 
 namespace compax::dem
 {
-  /// Which branch of the contact law the stiffness follows.
-  enum class ContactBranch
+  /// Refreshes the contact list of a periodic cell if needed.
+  inline void
+  update_contacts(PeriodicBed &bed, const ContactModel &model)
   {
-    /// The law's tangent at the current state and history (plastic where
-    /// the contact is loading): the consistent tangent of the next step.
-    current,
-    /// Elastic unloading everywhere: contacts on the plastic branch take
-    /// the unloading stiffness 16 E* a / (3 pi) (the elastic moduli).
-    unloading
-  };
+    bed.contacts.update(bed.particles, bed.cell, model);
+  }
 
-  /// Response of a periodic contact at overlap gamma on the given branch:
-  /// the law's, with the elastic unloading stiffness 16 E* a / (3 pi)
-  /// where the contact is on the plastic branch and `unloading` is asked.
-  ContactResponse
+  /// A periodic cell's residual is the serial sum of its pairs.
+  template <>
+  inline constexpr std::size_t parallel_residual_pairs<
+    PeriodicBed> = std::numeric_limits<std::size_t>::max();
+
+  /// Response of a periodic contact at overlap gamma on the given branch
+  /// (contact_response()).
+  inline ContactResponse
   periodic_contact_response(const PeriodicContact &c,
-                            double                 gamma,
-                            ContactBranch          branch);
-
-  /**
-   * Residual F and stiffness K = dF/dx of a periodic cell at fixed lattice
-   * and internal variables: the pair terms of the die's ContactAssembler
-   * with the branch vector taken to the contact's image. A pair (i, j)
-   * touching through several images adds all of them to the same blocks.
-   */
-  class PeriodicAssembler
+                            const double           gamma,
+                            const ContactBranch    branch)
   {
-  public:
-    /// F only (refreshes the contact list if needed).
-    ContactSums
-    residual(PeriodicBed &bed, const ContactModel &model, Eigen::VectorXd &F);
+    return contact_response(c, gamma, branch);
+  }
 
-    /// F and K; the pattern of K is rebuilt only when the list changed.
-    ContactSums
-    assemble(PeriodicBed        &bed,
-             const ContactModel &model,
-             Eigen::VectorXd    &F,
-             BlockSparseMatrix  &K,
-             ContactBranch       branch = ContactBranch::current);
+  /// Residual and stiffness of a periodic cell at fixed lattice
+  /// (PairAssembler): the pair terms with the branch vector taken to the
+  /// contact's image.
+  using PeriodicAssembler = PairAssembler<PeriodicBed>;
 
-  private:
-    template <bool with_stiffness>
-    ContactSums
-    evaluate(const PeriodicBed &bed,
-             Eigen::VectorXd   &F,
-             BlockSparseMatrix *K,
-             ContactBranch      branch);
-
-
-    PairPattern pattern;
-  };
+  extern template class PairAssembler<PeriodicBed>;
 } // namespace compax::dem

@@ -38,6 +38,13 @@ namespace compax::dem
     }
   };
 
+  /// Branch vector of a contact of the cell to the image of j [m].
+  inline Eigen::Vector3d
+  branch_vector(const PeriodicBed &bed, const PeriodicContact &c)
+  {
+    return branch_vector(bed.particles, bed.cell, c);
+  }
+
   /// Moves the particles and the lattice of a cell from its deformation
   /// to F by the affine map F F_old^{-1}, without equilibrium (the
   /// predictor of a strain step).

@@ -11,18 +11,6 @@ namespace compax::dem
 {
   namespace
   {
-    bool
-    precedes(const PeriodicContact &c, const ImagePair &p)
-    {
-      return ImagePair{c.i, c.j, c.image} < p;
-    }
-
-    bool
-    same(const PeriodicContact &c, const ImagePair &p)
-    {
-      return c.i == p.i && c.j == p.j && c.image == p.image;
-    }
-
     /// Spectral norm of a 3x3 matrix.
     double
     spectral_norm(const Eigen::Matrix3d &A)
@@ -33,45 +21,30 @@ namespace compax::dem
     }
   } // namespace
 
-  PeriodicContactSet::PeriodicContactSet(const double skin)
-      : skin_(skin)
-      , reference_lattice(Eigen::Matrix3d::Identity())
-  {
-  }
-
   bool
-  PeriodicContactSet::update(const ParticleSystem &particles,
-                             const PeriodicCell   &cell,
-                             const ContactModel   &model)
+  PeriodicContactSet::moved_too_far(const ParticleSystem &particles,
+                                    const PeriodicCell   &cell) const
   {
-    bool needed = !built || reference_positions.size() != particles.size();
-    if (!needed)
-      {
-        // Displacements relative to the affine motion of the cell since the
-        // build, and the cell's own change acting on a candidate branch.
-        const Eigen::Matrix3d A = cell.lattice() * reference_lattice.inverse();
-        double                max_sq = 0.0;
-        for (std::size_t i = 0; i < particles.size(); ++i)
-          max_sq
-            = std::max(max_sq,
-                       (particles.positions[i] - A * reference_positions[i])
-                         .squaredNorm());
-        const double branch = 2.0 * particles.max_radius() + skin_;
-        needed              = 2.0 * std::sqrt(max_sq)
-                   + spectral_norm(A - Eigen::Matrix3d::Identity()) * branch
-                 >= skin_;
-      }
-    if (needed)
-      rebuild(particles, cell, model);
-    return needed;
+    // Displacements relative to the affine motion of the cell since the
+    // build, and the cell's own change acting on a candidate branch.
+    const Eigen::Matrix3d A = cell.lattice() * reference_lattice.inverse();
+    const std::vector<Eigen::Vector3d> &x0     = built_positions();
+    double                              max_sq = 0.0;
+    for (std::size_t i = 0; i < particles.size(); ++i)
+      max_sq
+        = std::max(max_sq, (particles.positions[i] - A * x0[i]).squaredNorm());
+    const double branch = 2.0 * particles.max_radius() + skin();
+    return 2.0 * std::sqrt(max_sq)
+             + spectral_norm(A - Eigen::Matrix3d::Identity()) * branch
+           >= skin();
   }
 
   void
-  PeriodicContactSet::rebuild(const ParticleSystem &particles,
-                              const PeriodicCell   &cell,
-                              const ContactModel   &model)
+  PeriodicContactSet::find_contacts(const ParticleSystem &particles,
+                                    const PeriodicCell   &cell,
+                                    const ContactModel   &model)
   {
-    const double needed_width = 2.0 * particles.max_radius() + skin_;
+    const double needed_width = 2.0 * particles.max_radius() + skin();
     for (int axis = 0; axis < 3; ++axis)
       if (cell.width(axis) < needed_width)
         throw std::runtime_error(
@@ -81,57 +54,24 @@ namespace compax::dem
           + std::to_string(needed_width)
           + " m); use more particles or a larger cell");
     grid.find_pairs(
-      cell, particles.positions, particles.radii, skin_, candidates);
-
-    // Merge the sorted candidates with the sorted old contacts, keeping
-    // histories of surviving contacts and of contacts that left the list.
-    old_pairs.swap(pairs);
-    pairs.clear();
-    pairs.reserve(candidates.size() + 16);
-    std::size_t k = 0;
-    for (const ImagePair &ij : candidates)
-      {
-        while (k < old_pairs.size() && precedes(old_pairs[k], ij))
-          {
-            if (has_history(old_pairs[k].history))
-              pairs.push_back(old_pairs[k]);
-            ++k;
-          }
-        if (k < old_pairs.size() && same(old_pairs[k], ij))
-          pairs.push_back(old_pairs[k++]);
-        else
-          pairs.push_back(
-            PeriodicContact{ij.i,
-                            ij.j,
-                            ij.image,
-                            model.pair_law(particles.materials[ij.i],
-                                           particles.radii[ij.i],
-                                           particles.materials[ij.j],
-                                           particles.radii[ij.j]),
-                            ContactHistory{}});
-      }
-    for (; k < old_pairs.size(); ++k)
-      if (has_history(old_pairs[k].history))
-        pairs.push_back(old_pairs[k]);
-
-    reference_positions = particles.positions;
-    reference_lattice   = cell.lattice();
-    built               = true;
-    revision_           = next_contact_list_revision();
-  }
-
-  BondChanges
-  PeriodicContactSet::update_histories(const ParticleSystem &particles,
-                                       const PeriodicCell   &cell,
-                                       const double          resolution)
-  {
-    BondChanges changes;
-    for (PeriodicContact &c : pairs)
-      {
-        const double gamma = particles.radii[c.i] + particles.radii[c.j]
-                             - branch_vector(particles, cell, c).norm();
-        update_history(c.law, gamma, c.history, changes, resolution);
-      }
-    return changes;
+      cell, particles.positions, particles.radii, skin(), candidates);
+    merge_candidates(
+      candidates,
+      pairs,
+      old_pairs,
+      [](const PeriodicContact &c) {
+        return ImagePair{c.i, c.j, c.image};
+      },
+      [&](const ImagePair &ij) {
+        return PeriodicContact{ij.i,
+                               ij.j,
+                               ij.image,
+                               model.pair_law(particles.materials[ij.i],
+                                              particles.radii[ij.i],
+                                              particles.materials[ij.j],
+                                              particles.radii[ij.j]),
+                               ContactHistory{}};
+      });
+    reference_lattice = cell.lattice();
   }
 } // namespace compax::dem

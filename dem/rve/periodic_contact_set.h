@@ -5,7 +5,7 @@
 #include "dem/periodic/periodic_cell.h"
 #include "dem/periodic/periodic_pairs.h"
 #include "dem/solver/contact_model.h"
-#include "dem/solver/contact_set.h"
+#include "dem/solver/verlet_list.h"
 
 #include <cstdint>
 #include <vector>
@@ -36,73 +36,47 @@ namespace compax::dem
     return p.positions[c.i] - p.positions[c.j] - cell.image_offset(c.image);
   }
 
+  /// Overlap gamma = R_i + R_j - |d| of a periodic contact [m].
+  inline double
+  contact_overlap(const ParticleSystem  &p,
+                  const PeriodicCell    &cell,
+                  const PeriodicContact &c)
+  {
+    return p.radii[c.i] + p.radii[c.j] - branch_vector(p, cell, c).norm();
+  }
+
   /**
-   * The candidate contacts of a periodic cell (a Verlet list with a skin)
-   * with their internal variables (a_p, a_B).
-   *
-   * The list is rebuilt when the particles' displacements relative to the
-   * affine motion of the cell since the last build, plus the change of
-   * the cell acting on the longest candidate branch, could have brought
-   * two surfaces within the skin. A rebuild keeps the history of every
-   * surviving (i, j, image) and keeps pairs with a history that left the
-   * list, as the die's ContactSet does.
+   * The candidate contacts of a periodic cell, pairs through lattice
+   * images, as a VerletList. The list is rebuilt when the particles'
+   * displacements relative to the affine motion of the cell since the last
+   * build, plus the change of the cell acting on the longest candidate
+   * branch, could have brought two surfaces within the skin. A rebuild
+   * throws if the cell is narrower than the largest diameter plus the skin
+   * (a particle would touch its own image).
    */
-  class PeriodicContactSet
+  class PeriodicContactSet : public VerletList<PeriodicContactSet, PeriodicCell>
   {
   public:
-    /// @param skin Verlet skin [m], e.g. 0.3 R
-    explicit PeriodicContactSet(double skin = 0.0);
+    using VerletList::VerletList;
 
     std::vector<PeriodicContact> pairs;
 
-    double
-    skin() const
-    {
-      return skin_;
-    }
-
-    void
-    set_skin(double skin)
-    {
-      skin_ = skin;
-    }
-
-    /// Rebuilds the list if the displacement criterion asks for it;
-    /// returns whether it did.
-    bool
-    update(const ParticleSystem &particles,
-           const PeriodicCell   &cell,
-           const ContactModel   &model);
-
-    /// Rebuilds the list unconditionally.
-    void
-    rebuild(const ParticleSystem &particles,
-            const PeriodicCell   &cell,
-            const ContactModel   &model);
-
-    /// Increases at every rebuild (stiffness patterns compare it).
-    std::uint64_t
-    revision() const
-    {
-      return revision_;
-    }
-
-    /// Applies Eq. (13) to every contact at the current (converged)
-    /// positions, with forces resolved to `resolution` [N] (see
-    /// update_history()); the only place where histories change.
-    BondChanges
-    update_histories(const ParticleSystem &particles,
-                     const PeriodicCell   &cell,
-                     double                resolution = 0.0);
-
   private:
-    double                       skin_;
-    std::uint64_t                revision_ = 0;
-    bool                         built     = false;
+    friend VerletList;
+
+    bool
+    moved_too_far(const ParticleSystem &particles,
+                  const PeriodicCell   &cell) const;
+
+    void
+    find_contacts(const ParticleSystem &particles,
+                  const PeriodicCell   &cell,
+                  const ContactModel   &model);
+
     PeriodicCellGrid             grid;
     std::vector<ImagePair>       candidates;
     std::vector<PeriodicContact> old_pairs;
-    std::vector<Eigen::Vector3d> reference_positions;
-    Eigen::Matrix3d              reference_lattice;
+    /// The lattice at the last build [m].
+    Eigen::Matrix3d reference_lattice = Eigen::Matrix3d::Identity();
   };
 } // namespace compax::dem

@@ -24,4 +24,12 @@ namespace compax::dem
       return particles.solid_volume() / walls.enclosed_volume();
     }
   };
+
+  /// Branch vector d = x_i - x_j of a pair contact [m]; the normal
+  /// n = d/|d| points from j to i.
+  inline Eigen::Vector3d
+  branch_vector(const Bed &bed, const PairContact &c)
+  {
+    return bed.particles.positions[c.i] - bed.particles.positions[c.j];
+  }
 } // namespace compax::dem

@@ -4,9 +4,11 @@
 #include "dem/neighbors/cell_grid.h"
 #include "dem/particles/particle_system.h"
 #include "dem/solver/contact_model.h"
+#include "dem/solver/verlet_list.h"
 #include "dem/walls/die_walls.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace compax::dem
@@ -29,112 +31,6 @@ namespace compax::dem
     ContactHistory         history;
   };
 
-  /// Bonds created and broken by one history update (Eq. 13).
-  struct BondChanges
-  {
-    std::size_t formed = 0;
-    std::size_t broken = 0;
-  };
-
-  /**
-   * The candidate contacts of a bed (a Verlet list with a skin) together
-   * with their internal variables (a_p, a_B).
-   *
-   * The list is rebuilt only when some particle moved more than half the
-   * skin, or a wall plus a particle more than the skin, since the last
-   * build. A rebuild keeps the history of every surviving pair, and keeps
-   * a pair that has left the list if it has a history (a_p > 0): plastic
-   * deformation is permanent even when two particles separate.
-   */
-  class ContactSet
-  {
-  public:
-    /// @param skin Verlet skin [m], e.g. 0.3 R
-    explicit ContactSet(double skin = 0.0);
-
-    std::vector<PairContact> pairs;
-    std::vector<WallContact> walls;
-
-    double
-    skin() const
-    {
-      return skin_;
-    }
-
-    void
-    set_skin(double skin)
-    {
-      skin_ = skin;
-    }
-
-    /// Rebuilds the list if the displacement criterion asks for it;
-    /// returns whether it did.
-    bool
-    update(const ParticleSystem &particles,
-           const DieWalls       &walls,
-           const ContactModel   &model);
-
-    /// Rebuilds the list unconditionally.
-    void
-    rebuild(const ParticleSystem &particles,
-            const DieWalls       &walls,
-            const ContactModel   &model);
-
-    /// Increases at every rebuild (stiffness patterns compare it).
-    std::uint64_t
-    revision() const
-    {
-      return revision_;
-    }
-
-    /// Applies Eq. (13) to every contact at the current (converged)
-    /// positions, with forces resolved to `resolution` [N] (see
-    /// update_history()); the only place where histories change.
-    BondChanges
-    update_histories(const ParticleSystem &particles,
-                     const DieWalls       &walls,
-                     double                resolution = 0.0);
-
-  private:
-    double                       skin_;
-    std::uint64_t                revision_ = 0;
-    bool                         built     = false;
-    CellGrid                     grid;
-    std::vector<ParticlePair>    candidates;
-    std::vector<PairContact>     old_pairs;
-    std::vector<WallContact>     old_walls;
-    std::vector<Eigen::Vector3d> reference_positions;
-    double                       reference_walls[n_walls] = {0.0, 0.0, 0.0};
-  };
-
-  /// Whether a contact keeps internal variables (plastic radius or bond).
-  inline bool
-  has_history(const ContactHistory &h)
-  {
-    return h.a_p > 0.0 || h.a_B > 0.0;
-  }
-
-  /**
-   * Applies Eq. (13) to one contact at overlap gamma and counts the bond
-   * it forms or breaks. A contact whose force |P| is not above
-   * `resolution` [N] (the equilibrium solve's force resolution) keeps its
-   * plastic radius: the solve determines no force there (an unjammed
-   * region's exact equilibrium is force-free), so its left-over overlap
-   * is not plastic deformation (Eq. 13 at the converged state, with the
-   * forces the solve resolves). Breakage (a = 0) always applies.
-   */
-  void
-  update_history(const BondedElastoplasticLaw &law,
-                 double                        gamma,
-                 ContactHistory               &history,
-                 BondChanges                  &changes,
-                 double                        resolution = 0.0);
-
-  /// A new revision number for a rebuilt contact list, unique across all
-  /// lists, so that a restored copy never aliases a newer list.
-  std::uint64_t
-  next_contact_list_revision();
-
   /// Overlap gamma = R_i + R_j - |x_i - x_j| of a pair contact [m].
   inline double
   pair_overlap(const ParticleSystem &p, const PairContact &c)
@@ -142,4 +38,66 @@ namespace compax::dem
     return p.radii[c.i] + p.radii[c.j]
            - (p.positions[c.i] - p.positions[c.j]).norm();
   }
+
+  /// Overlap of a pair contact in a die [m] (the walls play no part).
+  inline double
+  contact_overlap(const ParticleSystem &p,
+                  const DieWalls &,
+                  const PairContact &c)
+  {
+    return pair_overlap(p, c);
+  }
+
+  /// Overlap of a particle with a wall [m].
+  inline double
+  contact_overlap(const ParticleSystem &p,
+                  const DieWalls       &die,
+                  const WallContact    &c)
+  {
+    return die.gap(c.wall, p.positions[c.i], p.radii[c.i]).overlap;
+  }
+
+  /**
+   * The candidate contacts of a bed in a die, particle pairs and particles
+   * at the walls, as a VerletList. The list is rebuilt only when some
+   * particle moved more than half the skin, or a wall plus a particle more
+   * than the skin, since the last build.
+   */
+  class ContactSet : public VerletList<ContactSet, DieWalls>
+  {
+  public:
+    using VerletList::VerletList;
+
+    std::vector<PairContact> pairs;
+    std::vector<WallContact> walls;
+
+    /// VerletList::update_histories() of the pairs and of the walls.
+    BondChanges
+    update_histories(const ParticleSystem &particles,
+                     const DieWalls       &die,
+                     double                resolution = 0.0);
+
+  private:
+    friend VerletList;
+
+    bool
+    moved_too_far(const ParticleSystem &particles, const DieWalls &die) const;
+
+    /// The pairs and the walls within the skin, in the lists.
+    void
+    find_contacts(const ParticleSystem &particles,
+                  const DieWalls       &die,
+                  const ContactModel   &model);
+
+    /// A wall contact's place in the list: (particle, wall).
+    using WallKey = std::pair<std::uint32_t, int>;
+
+    CellGrid                  grid;
+    std::vector<ParticlePair> candidates;
+    std::vector<WallKey>      wall_candidates;
+    std::vector<PairContact>  old_pairs;
+    std::vector<WallContact>  old_walls;
+    /// The walls' coordinates at the last build [m].
+    double reference_walls[n_walls] = {0.0, 0.0, 0.0};
+  };
 } // namespace compax::dem

@@ -3,31 +3,13 @@
 namespace compax::dem
 {
   bool
-  DieBedSystem::limit_closing(const Eigen::VectorXd &s,
-                              Eigen::VectorXd       &factor) const
+  limit_wall_closing(const Bed             &bed,
+                     const Eigen::VectorXd &s,
+                     const double           allowance,
+                     Eigen::VectorXd       &factor)
   {
-    const ParticleSystem &p = bed.particles;
-    MeanOverlap           mean;
-    for (const PairContact &c : bed.contacts.pairs)
-      mean.add(pair_overlap(p, c));
-    const double allowance = mean.value(1e-3 * p.mean_radius());
-    bool         clipped   = false;
-    for (const PairContact &c : bed.contacts.pairs)
-      {
-        // Only contacts the quadratic model does not see: virgin and apart.
-        if (c.history.a_p > 0.0)
-          continue;
-        const Eigen::Vector3d d     = p.positions[c.i] - p.positions[c.j];
-        const double          dist  = d.norm();
-        const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
-        if (gamma > 0.0)
-          continue;
-        const double closing
-          = -(s.segment<3>(3 * c.i) - s.segment<3>(3 * c.j)).dot(d) / dist;
-        // Both particles share the closing distance.
-        clipped |= limit_step_to_gap(factor, c.i, -gamma, closing, allowance);
-        clipped |= limit_step_to_gap(factor, c.j, -gamma, closing, allowance);
-      }
+    const ParticleSystem &p       = bed.particles;
+    bool                  clipped = false;
     for (const WallContact &c : bed.contacts.walls)
       {
         if (c.history.a_p > 0.0)

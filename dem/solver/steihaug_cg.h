@@ -4,6 +4,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace compax::dem
@@ -60,13 +62,17 @@ namespace compax::dem
    * min g.s + s.K s / 2 subject to |s|_M <= radius (Conn, Gould & Toint
    * 2000, Alg. 7.5.1): stops at the boundary, on negative curvature, or when
    * the preconditioned residual dropped by the factor `relative_tolerance`.
-   * Buffers are kept between calls, so repeated solves allocate nothing.
+   * K is any symmetric operator with vmult(dst, src), dst = K src: an
+   * assembled stiffness, or a Jacobian applied matrix-free (the nonlocal
+   * formulation's). Buffers are kept between calls, so repeated solves
+   * allocate nothing.
    */
   class SteihaugCG
   {
   public:
+    template <typename Operator>
     SteihaugResult
-    solve(const BlockSparseMatrix         &K,
+    solve(const Operator                  &K,
           const BlockJacobiPreconditioner &M,
           const Eigen::VectorXd           &g,
           double                           radius,
@@ -84,4 +90,76 @@ namespace compax::dem
                 const BlockJacobiPreconditioner &M,
                 double                           radius);
   };
+
+  template <typename Operator>
+  SteihaugResult
+  SteihaugCG::solve(const Operator                  &K,
+                    const BlockJacobiPreconditioner &M,
+                    const Eigen::VectorXd           &g,
+                    const double                     radius,
+                    const double                     relative_tolerance,
+                    const int                        max_iterations,
+                    Eigen::VectorXd                 &s)
+  {
+    const Eigen::Index n = g.size();
+    s.setZero(n);
+    r.resize(n);
+    z.resize(n);
+    p.resize(n);
+    Kp.resize(n);
+    Ms.resize(n);
+    Mp.resize(n);
+
+    SteihaugResult result;
+    // K is in N/m; the preconditioner was scaled by M.scale(), so work with
+    // K / scale to keep the model consistent with |s|_M.
+    const double scale = M.scale();
+    r                  = g / scale;
+    M.solve(z, r);
+    p                 = -z;
+    double       rz   = r.dot(z);
+    const double rz0  = rz;
+    const double stop = relative_tolerance * relative_tolerance * rz0;
+
+    if (rz0 > 0.0)
+      for (int it = 0; it < max_iterations; ++it)
+        {
+          result.iterations = it + 1;
+          K.vmult(Kp, p);
+          Kp /= scale;
+          const double curvature = p.dot(Kp);
+          if (!(curvature > 0.0))
+            {
+              s += to_boundary(s, p, M, radius) * p;
+              result.on_boundary        = true;
+              result.negative_curvature = true;
+              break;
+            }
+          const double alpha = rz / curvature;
+          // |s + alpha p|_M >= radius ?
+          M.multiply(Ms, s);
+          M.multiply(Mp, p);
+          const double ss = s.dot(Ms), sp = s.dot(Mp), pp = p.dot(Mp);
+          if (ss + 2.0 * alpha * sp + alpha * alpha * pp >= radius * radius)
+            {
+              s += to_boundary(s, p, M, radius) * p;
+              result.on_boundary = true;
+              break;
+            }
+          s += alpha * p;
+          r += alpha * Kp;
+          M.solve(z, r);
+          const double rz_new = r.dot(z);
+          if (rz_new <= stop)
+            break;
+          p  = -z + (rz_new / rz) * p;
+          rz = rz_new;
+        }
+
+    K.vmult(Kp, s);
+    result.predicted_decrease = -(g.dot(s) + 0.5 * s.dot(Kp));
+    M.multiply(Ms, s);
+    result.step_norm = std::sqrt(std::max(s.dot(Ms), 0.0));
+    return result;
+  }
 } // namespace compax::dem

@@ -1,6 +1,7 @@
 #include "dem/solver/trust_region_newton.h"
 
 #include "dem/solver/die_bed_system.h"
+#include "dem/solver/step_limits.h"
 
 #include <algorithm>
 #include <chrono>
@@ -22,43 +23,9 @@ namespace compax::dem
     }
   } // namespace
 
-  double
-  max_particle_norm(const Eigen::VectorXd &F)
-  {
-    double m = 0.0;
-    for (Eigen::Index i = 0; i + 2 < F.size(); i += 3)
-      m = std::max(m, F[i] * F[i] + F[i + 1] * F[i + 1] + F[i + 2] * F[i + 2]);
-    return std::sqrt(m);
-  }
-
   TrustRegionNewton::TrustRegionNewton(const EquilibriumOptions options)
       : opts(options)
   {
-  }
-
-  bool
-  TrustRegionNewton::limit_to_gaps(const EquilibriumSystem &system)
-  {
-    const std::size_t n = system.n_particles();
-    factor.setOnes(n);
-    bool clipped = system.limit_closing(s, factor);
-    // No particle moves farther than a quarter of the Verlet skin (the
-    // contact list stays valid); capping the few that would, instead of
-    // shrinking the trust region of the whole bed, keeps the others' steps.
-    const double cap = 0.25 * system.skin();
-    for (std::size_t i = 0; i < n; ++i)
-      {
-        const double len = s.segment<3>(3 * i).norm();
-        if (len * factor[i] > cap)
-          {
-            factor[i] = cap / len;
-            clipped   = true;
-          }
-      }
-    if (clipped)
-      for (std::size_t i = 0; i < n; ++i)
-        s.segment<3>(3 * i) *= factor[i];
-    return clipped;
   }
 
   EquilibriumResult
@@ -73,15 +40,8 @@ namespace compax::dem
   {
     EquilibriumResult result;
     const double      R_mean = system.mean_radius();
-    // The trust region bounds the M-norm of the whole step, so that a
-    // radius of r R sqrt(N) lets every particle move by about r R.
-    const double length
-      = R_mean * std::sqrt(static_cast<double>(system.n_particles()));
-    const double max_radius = opts.max_radius * length;
-    if (radius <= 0.0)
-      radius = opts.initial_radius * length;
-    radius
-      = std::clamp(radius, 1e-3 * opts.initial_radius * length, max_radius);
+    radius.start(system, opts.initial_radius, opts.max_radius);
+    trial.forget();
 
     auto assemble = [&]() {
       const auto t0 = clock_type::now();
@@ -89,22 +49,14 @@ namespace compax::dem
       result.assembly_seconds += seconds_since(t0);
       ++result.assemblies;
     };
-    auto relative = [&](const Eigen::VectorXd &f, const ContactSums &sums) {
-      const double fmax = max_particle_norm(f);
-      if (sums.mean_force > 0.0)
-        return fmax / sums.mean_force;
-      return fmax == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
-    };
 
     assemble();
-    double       last_step = 0.0;
-    bool         stepped   = false;
-    const double F0        = std::max(F.norm(), 1e-300);
-    double       best      = std::numeric_limits<double>::infinity();
-    int          best_at   = 0;
+    const double F0      = std::max(F.norm(), 1e-300);
+    double       best    = std::numeric_limits<double>::infinity();
+    int          best_at = 0;
     for (int it = 0;; ++it)
       {
-        result.relative_residual = relative(F, result.sums);
+        result.relative_residual = relative_residual(F, result.sums);
         if (result.relative_residual < 0.1 * best)
           {
             best    = result.relative_residual;
@@ -121,16 +73,15 @@ namespace compax::dem
             result.fire_seconds += seconds_since(tf);
             result.fire_iterations += fr.iterations;
             assemble();
-            result.relative_residual = relative(F, result.sums);
+            result.relative_residual = relative_residual(F, result.sums);
             best                     = result.relative_residual;
             best_at                  = it;
-            radius                   = opts.initial_radius * length;
-            stepped                  = false;
+            radius.restart();
+            trial.forget();
           }
         const bool force_ok = result.relative_residual <= opts.force_tolerance
                               || max_particle_norm(F) <= opts.force_floor;
-        const bool step_ok
-          = !stepped || last_step <= opts.step_tolerance * R_mean;
+        const bool step_ok = trial.last_move() <= opts.step_tolerance * R_mean;
         if (force_ok && step_ok)
           {
             result.converged = true;
@@ -146,13 +97,13 @@ namespace compax::dem
         const double eta = std::min(opts.max_forcing, std::sqrt(F.norm() / F0))
                            * (force_ok ? 0.1 : 1.0);
         const SteihaugResult sub
-          = cg.solve(K, M, F, radius, eta, opts.max_cg_iterations, s);
+          = cg.solve(K, M, F, radius.value(), eta, opts.max_cg_iterations, s);
         result.linear_seconds += seconds_since(t0);
         result.cg_iterations += sub.iterations;
         ++result.iterations;
         double pred = sub.predicted_decrease, step_norm = sub.step_norm;
         s_full = s;
-        if (opts.limit_to_gaps && limit_to_gaps(system))
+        if (opts.limit_to_gaps && limit_step_to_gaps(system, s, factor))
           {
             // The clipped step's own model decrease and length; if clipping
             // single particles lost the model decrease, shorten the whole
@@ -175,7 +126,7 @@ namespace compax::dem
         const double longest = max_particle_norm(s);
         if (longest > 0.5 * system.skin())
           {
-            radius = step_norm * 0.25 * system.skin() / longest;
+            radius.set(step_norm * 0.25 * system.skin() / longest);
             continue;
           }
         if (!(pred > 0.0))
@@ -186,42 +137,24 @@ namespace compax::dem
             break;
           }
 
-        // Trial point.
-        auto x = system.coordinates();
-        x_old  = x;
-        F_old  = F;
-        x += s;
         const ContactSums old_sums = result.sums;
-        assemble();
-        const double actual = -0.5 * (F_old + F).dot(s);
-        const double rho    = actual / pred;
+        const double      rho      = trial.take(system, s, F, pred, assemble);
         if (opts.trace)
           *opts.trace << "  newton it " << it << " residual "
                       << result.relative_residual << " mean force "
-                      << old_sums.mean_force << " radius " << radius << " cg "
-                      << sub.iterations << " boundary " << sub.on_boundary
-                      << " negative curvature " << sub.negative_curvature
-                      << " predicted " << pred << " rho " << rho << " step "
-                      << max_particle_norm(s) << '\n';
+                      << old_sums.mean_force << " radius " << radius.value()
+                      << " cg " << sub.iterations << " boundary "
+                      << sub.on_boundary << " negative curvature "
+                      << sub.negative_curvature << " predicted " << pred
+                      << " rho " << rho << " step " << max_particle_norm(s)
+                      << '\n';
 
-        if (rho < 0.25)
-          radius = 0.25 * step_norm;
-        else if (rho > 0.75 && sub.on_boundary)
-          radius = std::min(2.0 * radius, max_radius);
-
-        if (rho > 0.05 && std::isfinite(F.squaredNorm()))
-          {
-            stepped   = true;
-            last_step = max_particle_norm(s);
-          }
-        else
+        radius.update(rho, step_norm, sub.on_boundary);
+        if (!trial.keep_or_undo(
+              rho, std::isfinite(F.squaredNorm()), system, s, assemble))
           {
             ++result.rejected_steps;
-            x           = x_old;
-            F           = F_old;
-            result.sums = old_sums;
-            assemble(); // K at x_old (the contact list may have changed)
-            if (radius < 1e-12 * R_mean)
+            if (radius.value() < 1e-12 * R_mean)
               break;
           }
       }

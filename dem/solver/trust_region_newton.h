@@ -5,7 +5,10 @@
 #include "dem/solver/contact_assembler.h"
 #include "dem/solver/equilibrium_system.h"
 #include "dem/solver/fire_relaxation.h"
+#include "dem/solver/residual_norms.h"
 #include "dem/solver/steihaug_cg.h"
+#include "dem/solver/trial_step.h"
+#include "dem/solver/trust_radius.h"
 
 #include <Eigen/Core>
 
@@ -125,7 +128,7 @@ namespace compax::dem
     void
     reset()
     {
-      radius = -1.0;
+      radius.forget();
     }
 
     /// The stiffness at the last evaluated state.
@@ -136,22 +139,15 @@ namespace compax::dem
     }
 
   private:
-    /// Applies EquilibriumOptions::limit_to_gaps to the step s; returns
-    /// whether it changed it.
-    bool
-    limit_to_gaps(const EquilibriumSystem &system);
-
     EquilibriumOptions        opts;
     ContactAssembler          assembler;
     BlockSparseMatrix         K;
     BlockJacobiPreconditioner M;
     SteihaugCG                cg;
     FireRelaxation            fire;
-    Eigen::VectorXd           F, F_old, x_old, s, s_full, Ks, factor;
-    double                    radius = -1.0;
+    TrialStep                 trial;
+    Eigen::VectorXd           F, s, s_full, Ks, factor;
+    TrustRadius               radius;
   };
 
-  /// max_i |F_i| over particles (F has 3 entries per particle).
-  double
-  max_particle_norm(const Eigen::VectorXd &F);
 } // namespace compax::dem

@@ -1,0 +1,237 @@
+#pragma once
+
+#include "dem/contact/bonded_elastoplastic.h"
+#include "dem/solver/block_sparse_matrix.h"
+#include "dem/solver/contact_model.h"
+#include "dem/solver/contact_sums.h"
+#include "dem/solver/pair_pattern.h"
+#include "dem/solver/pair_terms.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+#include <omp.h>
+
+namespace compax::dem
+{
+  /// Which branch of the contact law the stiffness follows.
+  enum class ContactBranch
+  {
+    /// The law's tangent at the current state and history (plastic where
+    /// the contact is loading): the consistent tangent of the next step.
+    current,
+    /// Elastic unloading everywhere: contacts on the plastic branch take
+    /// the unloading stiffness 16 E* a / (3 pi) (the elastic moduli).
+    unloading
+  };
+
+  /**
+   * The law's response(gamma, a_p, a_B) evaluated inline: the plastic
+   * branch for any m, the elastic branch and the bridge for m = 2 with
+   * a^{1/2} and a_p^{1/2} by sqrt instead of pow (libm's pow dominated the
+   * profile of the residual); otherwise delegated to the law. The same
+   * formulas, equal to round-off (tests/unit/dem/test_solver_consolidation
+   * compares both on every branch).
+   */
+  ContactResponse
+  contact_response(const BondedElastoplasticLaw &law,
+                   double                        gamma,
+                   const ContactHistory         &history);
+
+  /// The elastic unloading stiffness 16 E* a / (3 pi) of a contact of
+  /// radius a [N/m].
+  double
+  unloading_stiffness(const BondedElastoplasticLaw &law, double a);
+
+  /// The response of a contact (a die's or a periodic cell's) at overlap
+  /// gamma on the given branch: the law's, with the elastic unloading
+  /// stiffness 16 E* a / (3 pi) where the contact is on the plastic branch
+  /// and `unloading` is asked.
+  template <typename Contact>
+  inline ContactResponse
+  contact_response(const Contact      &c,
+                   const double        gamma,
+                   const ContactBranch branch)
+  {
+    ContactResponse r = contact_response(c.law, gamma, c.history);
+    if (branch == ContactBranch::unloading && r.contact_radius > 0.0
+        && r.contact_radius >= c.history.a_p)
+      r.stiffness = unloading_stiffness(c.law, r.contact_radius);
+    return r;
+  }
+
+  /// The wall terms of a bed without walls (a periodic cell): none. A bed
+  /// in a die has its own (contact_assembler.h).
+  template <bool with_stiffness, typename BedType>
+  inline void
+  add_wall_terms(const BedType &,
+                 Eigen::VectorXd &,
+                 BlockSparseMatrix *,
+                 ContactSums &,
+                 LoadedContacts &)
+  {
+  }
+
+  /**
+   * Beds with at least this many candidate pairs evaluate the pairs of a
+   * residual on every OpenMP thread, each into its own force vector, and
+   * sum those in thread order (the same result for the same thread
+   * count). Below it the threads' start and the sum of their vectors cost
+   * about what they save. A bed type may set its own.
+   */
+  template <typename BedType>
+  inline constexpr std::size_t parallel_residual_pairs = 20000;
+
+  /**
+   * Residual and stiffness of the static equilibrium of Gonzalez 2018,
+   * Eq. (12), of a bed at fixed walls or lattice and fixed internal
+   * variables: ContactAssembler for a die's Bed, PeriodicAssembler for a
+   * PeriodicBed.
+   *
+   * The residual is the out-of-balance internal force
+   * F_i = - sum_j P_ij n_ij (n_ij = d_ij/|d_ij|, d_ij the branch vector,
+   * to the contact's image in a periodic cell), the gradient of the bed's
+   * stored energy, so that equilibrium is F = 0 and K = dF/dx is
+   * symmetric. A pair contributes the block k = P' n n^T - P/d (I - n n^T)
+   * to (i,i) and (j,j) and -k to (i,j) and (j,i) (add_pair_terms(); a pair
+   * touching through several images adds all of them to the same blocks),
+   * a wall its own terms (add_wall_terms()). What depends on the bed comes
+   * from overloads for its type: update_contacts(), branch_vector(),
+   * contact_response() and add_wall_terms().
+   */
+  template <typename BedType>
+  class PairAssembler
+  {
+  public:
+    static constexpr std::size_t parallel_pairs
+      = parallel_residual_pairs<BedType>;
+
+    /// F only (refreshes the contact list if needed).
+    ContactSums
+    residual(BedType &bed, const ContactModel &model, Eigen::VectorXd &F);
+
+    /// F and K on the given branch of the law; the pattern of K is rebuilt
+    /// only when the contact list changed.
+    ContactSums
+    assemble(BedType            &bed,
+             const ContactModel &model,
+             Eigen::VectorXd    &F,
+             BlockSparseMatrix  &K,
+             ContactBranch       branch = ContactBranch::current);
+
+  private:
+    template <bool with_stiffness>
+    ContactSums
+    evaluate(const BedType     &bed,
+             Eigen::VectorXd   &F,
+             BlockSparseMatrix *K,
+             ContactBranch      branch);
+
+    /// The pairs' forces into F on every thread (residual only).
+    void
+    add_pair_forces_in_parallel(const BedType   &bed,
+                                Eigen::VectorXd &F,
+                                LoadedContacts  &loaded);
+
+    PairPattern pattern;
+    /// Per-thread force vectors and counts of add_pair_forces_in_parallel,
+    /// kept between calls so that a residual allocates nothing.
+    std::vector<Eigen::VectorXd> thread_forces;
+    std::vector<LoadedContacts>  thread_loaded;
+  };
+
+  template <typename BedType>
+  ContactSums
+  PairAssembler<BedType>::residual(BedType            &bed,
+                                   const ContactModel &model,
+                                   Eigen::VectorXd    &F)
+  {
+    update_contacts(bed, model);
+    return evaluate<false>(bed, F, nullptr, ContactBranch::current);
+  }
+
+  template <typename BedType>
+  ContactSums
+  PairAssembler<BedType>::assemble(BedType            &bed,
+                                   const ContactModel &model,
+                                   Eigen::VectorXd    &F,
+                                   BlockSparseMatrix  &K,
+                                   const ContactBranch branch)
+  {
+    update_contacts(bed, model);
+    pattern.refresh(bed.particles.size(),
+                    bed.contacts.revision(),
+                    bed.contacts.pairs,
+                    K);
+    K.set_zero();
+    return evaluate<true>(bed, F, &K, branch);
+  }
+
+  template <typename BedType>
+  template <bool with_stiffness>
+  ContactSums
+  PairAssembler<BedType>::evaluate(const BedType      &bed,
+                                   Eigen::VectorXd    &F,
+                                   BlockSparseMatrix  *K,
+                                   const ContactBranch branch)
+  {
+    F.setZero(3 * bed.particles.size());
+    ContactSums       sums;
+    LoadedContacts    loaded;
+    const std::size_t n_pairs = bed.contacts.pairs.size();
+    if (!with_stiffness && n_pairs >= parallel_pairs)
+      add_pair_forces_in_parallel(bed, F, loaded);
+    else
+      {
+        const auto response = [branch](const auto &c, const double gamma) {
+          return contact_response(c, gamma, branch);
+        };
+        for (std::size_t k = 0; k < n_pairs; ++k)
+          add_pair_terms<with_stiffness>(
+            bed, k, response, pattern, F, K, loaded);
+      }
+    add_wall_terms<with_stiffness>(bed, F, K, sums, loaded);
+    loaded.report(sums);
+    return sums;
+  }
+
+  template <typename BedType>
+  void
+  PairAssembler<BedType>::add_pair_forces_in_parallel(const BedType   &bed,
+                                                      Eigen::VectorXd &F,
+                                                      LoadedContacts  &loaded)
+  {
+    const auto response = [](const auto &c, const double gamma) {
+      return contact_response(c, gamma, ContactBranch::current);
+    };
+    const int  threads = omp_get_max_threads();
+    const auto size    = static_cast<Eigen::Index>(F.size());
+    thread_forces.resize(threads);
+    thread_loaded.assign(threads, LoadedContacts{});
+    for (Eigen::VectorXd &f : thread_forces)
+      f.resize(size);
+#pragma omp parallel num_threads(threads)
+    {
+      const int        t  = omp_get_thread_num();
+      Eigen::VectorXd &Ft = thread_forces[t];
+      Ft.setZero();
+      // Thread-local counters: neighbouring slots of one vector would
+      // share a cache line and serialise the threads.
+      LoadedContacts loaded_t;
+      const auto     n = static_cast<std::int64_t>(bed.contacts.pairs.size());
+#pragma omp for schedule(static)
+      for (std::int64_t k = 0; k < n; ++k)
+        add_pair_terms<false>(bed, k, response, pattern, Ft, nullptr, loaded_t);
+      thread_loaded[t] = loaded_t;
+      // The loop's implicit barrier: every thread's vector is complete.
+#pragma omp for schedule(static)
+      for (Eigen::Index i = 0; i < size; ++i)
+        for (int s = 0; s < threads; ++s)
+          F[i] += thread_forces[s][i];
+    }
+    for (int t = 0; t < threads; ++t)
+      loaded.add(thread_loaded[t]);
+  }
+} // namespace compax::dem

@@ -1,0 +1,100 @@
+#pragma once
+
+#include "dem/contact/contact_response.h"
+#include "dem/particles/particle_system.h"
+#include "dem/solver/block_sparse_matrix.h"
+#include "dem/solver/contact_sums.h"
+#include "dem/solver/pair_block.h"
+#include "dem/solver/pair_pattern.h"
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <cstddef>
+
+namespace compax::dem
+{
+  /**
+   * Virgin contacts whose overlap is below this fraction of the centre
+   * distance (of the radius, at a wall) are treated as touching without
+   * force: such overlaps are round-off of the coordinates (a deposited bed
+   * touches exactly), and their forces (~1e-12 N for R = 220 um) would
+   * otherwise set the scale of the convergence test of an unloaded bed.
+   */
+  inline constexpr double touch_tolerance = 0.0;
+
+  /// The count of the contacts carrying a force and the sum of their |P|,
+  /// from which ContactSums takes n_loaded and mean_force.
+  struct LoadedContacts
+  {
+    std::size_t n       = 0;
+    double      sum_abs = 0.0;
+
+    void
+    add(const ContactResponse &r)
+    {
+      if (r.force != 0.0)
+        {
+          ++n;
+          sum_abs += std::abs(r.force);
+        }
+    }
+
+    void
+    add(const LoadedContacts &other)
+    {
+      n += other.n;
+      sum_abs += other.sum_abs;
+    }
+
+    /// Sets sums.n_loaded and sums.mean_force.
+    void
+    report(ContactSums &sums) const
+    {
+      sums.n_loaded = n;
+      if (n > 0)
+        sums.mean_force = sum_abs / n;
+    }
+  };
+
+  /**
+   * Adds pair k of a bed (a die's Bed or a PeriodicBed) to the residual F
+   * and, with stiffness, its blocks to K at the slots of `pattern`
+   * (scatter_pair). The branch vector d comes from branch_vector(bed, c),
+   * the law's response at overlap gamma = R_i + R_j - |d| from
+   * `response(c, gamma)`. A pair that is virgin and apart (most candidates
+   * of a Verlet list) or has neither force nor stiffness adds nothing.
+   */
+  template <bool with_stiffness, typename BedType, typename Response>
+  inline void
+  add_pair_terms(const BedType     &bed,
+                 const std::size_t  k,
+                 const Response    &response,
+                 const PairPattern &pattern,
+                 Eigen::VectorXd   &F,
+                 BlockSparseMatrix *K,
+                 LoadedContacts    &loaded)
+  {
+    const ParticleSystem &p     = bed.particles;
+    const auto           &c     = bed.contacts.pairs[k];
+    const Eigen::Vector3d d     = branch_vector(bed, c);
+    const double          dist  = d.norm();
+    const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
+    if (c.history.a_p == 0.0
+        && (gamma <= 0.0 || gamma < touch_tolerance * dist))
+      return;
+    const ContactResponse r = response(c, gamma);
+    if (r.force == 0.0 && r.stiffness == 0.0)
+      return;
+    scatter_pair(F,
+                 with_stiffness ? K : nullptr,
+                 c.i,
+                 c.j,
+                 with_stiffness ? pattern.ij(k) : 0,
+                 with_stiffness ? pattern.ji(k) : 0,
+                 d / dist,
+                 dist,
+                 r);
+    loaded.add(r);
+  }
+} // namespace compax::dem

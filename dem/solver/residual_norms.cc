@@ -1,0 +1,26 @@
+#include "dem/solver/residual_norms.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace compax::dem
+{
+  double
+  max_particle_norm(const Eigen::VectorXd &F)
+  {
+    double m = 0.0;
+    for (Eigen::Index i = 0; i + 2 < F.size(); i += 3)
+      m = std::max(m, F[i] * F[i] + F[i + 1] * F[i + 1] + F[i + 2] * F[i + 2]);
+    return std::sqrt(m);
+  }
+
+  double
+  relative_residual(const Eigen::VectorXd &F, const ContactSums &sums)
+  {
+    const double fmax = max_particle_norm(F);
+    if (sums.mean_force > 0.0)
+      return fmax / sums.mean_force;
+    return fmax == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+  }
+} // namespace compax::dem

@@ -1,0 +1,63 @@
+#pragma once
+
+#include "dem/solver/bed.h"
+#include "dem/solver/block_sparse_matrix.h"
+#include "dem/solver/contact_sums.h"
+#include "dem/solver/pair_assembler.h"
+#include "dem/solver/pair_terms.h"
+
+#include <Eigen/Core>
+
+namespace compax::dem
+{
+  /**
+   * Adds the wall contacts of a bed in a die to F (their forces also to
+   * sums.wall_force) and, with stiffness, to the diagonal blocks of K: a
+   * punch contributes P' n n^T; the die wall also P/r (I - e_r e_r^T)
+   * restricted to the horizontal plane, because its normal turns with the
+   * particle.
+   */
+  template <bool with_stiffness>
+  inline void
+  add_wall_terms(const Bed         &bed,
+                 Eigen::VectorXd   &F,
+                 BlockSparseMatrix *K,
+                 ContactSums       &sums,
+                 LoadedContacts    &loaded)
+  {
+    const ParticleSystem &p = bed.particles;
+    for (const WallContact &c : bed.contacts.walls)
+      {
+        const WallGap g = bed.walls.gap(c.wall, p.positions[c.i], p.radii[c.i]);
+        if (c.history.a_p == 0.0
+            && (g.overlap <= 0.0 || g.overlap < touch_tolerance * p.radii[c.i]))
+          continue;
+        const ContactResponse r = contact_response(c.law, g.overlap, c.history);
+        if (r.force == 0.0 && r.stiffness == 0.0)
+          continue;
+        F.template segment<3>(3 * c.i) -= r.force * g.normal;
+        sums.wall_force[static_cast<int>(c.wall)] += r.force;
+        loaded.add(r);
+        if constexpr (with_stiffness)
+          {
+            double *blk = K->block(K->diagonal_slot(c.i));
+            for (int row = 0; row < 3; ++row)
+              for (int col = 0; col < 3; ++col)
+                blk[3 * row + col]
+                  += r.stiffness * g.normal[row] * g.normal[col];
+            if (c.wall == Wall::die && g.axis_distance > 0.0)
+              {
+                // d(-P e_r)/dx with e_r turning: +P/r (I_xy - e_r e_r^T)
+                // in F = +P e_r (the wall pushes along -e_r).
+                const double s  = r.force / g.axis_distance;
+                const double ex = -g.normal[0], ey = -g.normal[1];
+                blk[0] += s * (1.0 - ex * ex);
+                blk[1] += s * (-ex * ey);
+                blk[3] += s * (-ex * ey);
+                blk[4] += s * (1.0 - ey * ey);
+              }
+          }
+      }
+  }
+
+} // namespace compax::dem
