@@ -197,22 +197,4 @@ namespace compax::dem
     total.converged = true;
     return total;
   }
-
-  RveStepResult
-  RveLoading::apply_strain(PeriodicBed           &bed,
-                           const Eigen::Matrix3d &strain_increment)
-  {
-    return deform_to(bed,
-                     (Eigen::Matrix3d::Identity() + strain_increment)
-                       * bed.deformation);
-  }
-
-  RveStepResult
-  RveLoading::equilibrate(PeriodicBed &bed)
-  {
-    RveStepResult total;
-    total.converged = substep(bed, bed.deformation, total);
-    total.substeps  = total.converged ? 1 : 0;
-    return total;
-  }
 } // namespace compax::dem

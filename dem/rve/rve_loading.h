@@ -1,5 +1,6 @@
 #pragma once
 
+#include "dem/rve/cell_steps.h"
 #include "dem/rve/periodic_assembler.h"
 #include "dem/rve/periodic_bed.h"
 #include "dem/solver/fire_relaxation.h"
@@ -110,7 +111,7 @@ namespace compax::dem
    * while the cell stays unjammed cuts the sub-step back; jammed once,
    * jammed for good).
    */
-  class RveLoading
+  class RveLoading : public CellSteps<RveLoading, RveStepResult>
   {
   public:
     RveLoading(const ContactModel &model, RveLoadingOptions options = {});
@@ -118,16 +119,6 @@ namespace compax::dem
     /// Deforms the cell to H = F_target H_0.
     RveStepResult
     deform_to(PeriodicBed &bed, const Eigen::Matrix3d &F_target);
-
-    /// Applies a small strain increment to the current configuration:
-    /// F <- (I + eps) F, eps symmetric.
-    RveStepResult
-    apply_strain(PeriodicBed &bed, const Eigen::Matrix3d &strain_increment);
-
-    /// Equilibrium at the current cell without moving it, then history
-    /// update (e.g. after a restart or a change of material).
-    RveStepResult
-    equilibrate(PeriodicBed &bed);
 
     const RveLoadingOptions &
     options() const
@@ -164,6 +155,8 @@ namespace compax::dem
     balanced_force_floor(const PeriodicBed &bed) const;
 
   private:
+    friend CellSteps<RveLoading, RveStepResult>;
+
     /// One sub-step to F; true if converged (state advanced).
     bool
     substep(PeriodicBed &bed, const Eigen::Matrix3d &F, RveStepResult &total);

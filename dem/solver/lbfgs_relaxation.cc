@@ -1,6 +1,7 @@
 #include "dem/solver/lbfgs_relaxation.h"
 
 #include "dem/solver/die_bed_system.h"
+#include "dem/solver/stiffness_scaling.h"
 #include "dem/solver/trust_region_newton.h"
 
 #include <algorithm>
@@ -32,23 +33,8 @@ namespace compax::dem
   void
   LbfgsRelaxation::update_preconditioner(EquilibriumSystem &system)
   {
-    sums                   = system.assemble(g, K);
-    const std::size_t n    = system.n_particles();
-    double            mean = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      {
-        const double *b = K.block(K.diagonal_slot(i));
-        mean += std::max({b[0], b[4], b[8], 0.0});
-      }
-    mean = n > 0 ? mean / n : 0.0;
-    if (!(mean > 0.0))
-      mean = 1.0;
-    for (std::size_t i = 0; i < n; ++i)
-      {
-        const double *b = K.block(K.diagonal_slot(i));
-        const double  k = std::max({b[0], b[4], b[8], 0.05 * mean});
-        inverse_diagonal.segment<3>(3 * i).setConstant(1.0 / k);
-      }
+    sums = system.assemble(g, K);
+    inverse_diagonal_stiffness(K, system.n_particles(), inverse_diagonal);
   }
 
   void

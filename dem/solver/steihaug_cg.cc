@@ -96,4 +96,13 @@ namespace compax::dem
     const double disc = std::sqrt(std::max(sp * sp - pp * c, 0.0));
     return (-sp + disc) / pp;
   }
+
+  template SteihaugResult
+  SteihaugCG::solve<BlockSparseMatrix>(const BlockSparseMatrix         &K,
+                                       const BlockJacobiPreconditioner &M,
+                                       const Eigen::VectorXd           &g,
+                                       double                           radius,
+                                       double           relative_tolerance,
+                                       int              max_iterations,
+                                       Eigen::VectorXd &s);
 } // namespace compax::dem
