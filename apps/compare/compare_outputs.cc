@@ -1,7 +1,7 @@
 #include "apps/compare/compare_outputs.h"
 
-#include "io/csv_writer.h"
 #include "apps/common/gnuplot.h"
+#include "io/csv_writer.h"
 
 #include <cmath>
 #include <fstream>
@@ -72,12 +72,12 @@ namespace compax::cli
                      const std::vector<coupling::InteriorRow> &rows)
   {
     io::CsvWriter csv(file,
-                  {"relative_density_die",
-                   "relative_density_interior",
-                   "sigma_zz_interior",
-                   "sigma_rr_interior",
-                   "sigma_zz_rve",
-                   "sigma_xx_rve"});
+                      {"relative_density_die",
+                       "relative_density_interior",
+                       "sigma_zz_interior",
+                       "sigma_rr_interior",
+                       "sigma_zz_rve",
+                       "sigma_xx_rve"});
     for (const coupling::InteriorRow &r : rows)
       {
         for (const double v : {r.relative_density_die,

@@ -16,7 +16,7 @@ namespace fem      = compax::fem;
 
 namespace
 {
-  constexpr double pi  = 3.14159265358979323846;
+  constexpr double pi      = 3.14159265358979323846;
   constexpr double missing = std::numeric_limits<double>::quiet_NaN();
 
   /// A die of 4 mm to 0.87, unloaded at 0.75, 0.79, 0.83, 0.87, mu = 0.5.
