@@ -155,7 +155,7 @@ namespace compax::cli
       std::cout << std::defaultfloat << std::setprecision(4)
                 << "Solver: " << t.newton_iterations << " Newton iterations ("
                 << t.cg_iterations << " CG), " << t.fire_iterations
-                << " FIRE fallback iterations, ";
+                << " relaxation iterations (FIRE or L-BFGS), ";
       // The elastic (Hertz or nonlocal) stepper does not time its
       // assemblies, linear solves and relaxations: print no zeros.
       if (t.assemblies > 0)

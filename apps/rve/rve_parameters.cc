@@ -320,7 +320,7 @@ namespace compax::cli
       "applies to Newton steps only.");
     prm.declare_entry(
       "Unjammed equilibrium",
-      "balanced-relaxation",
+      "balanced-lbfgs",
       dealii::Patterns::Selection(
         "relaxation|relaxation+newton|balanced-relaxation|balanced-lbfgs"),
       "Consolidation = none only (as compax die's Protocol/Unjammed "
@@ -331,9 +331,9 @@ namespace compax::cli
       "step whose Newton fails is cut back). balanced-relaxation: the "
       "relaxation itself run to the Solver tolerances (or every net force "
       "below 1e-6 of a particle's share of the Jamming pressure) within "
-      "2e5 FIRE iterations, else the step is cut back. balanced-lbfgs: the "
-      "same, minimised by L-BFGS instead of FIRE. The last three balance "
-      "loose states as tightly as jammed ones.");
+      "2e5 FIRE iterations, else the step is cut back. balanced-lbfgs "
+      "(default): the same, minimised by L-BFGS instead of FIRE. The last "
+      "three balance loose states as tightly as jammed ones.");
     prm.leave_subsection();
   }
 

@@ -47,11 +47,11 @@ namespace compax::dem
      *   load step from the deposit on, and Eq. (13) is applied at every
      *   converged state (Gonzalez 2018, Algorithm 1): bridges form from
      *   the first resolved contact force on. Below
-     *   consolidation.jamming_pressure on the punches a step is relaxed
-     *   by FIRE at fixed internal variables to
-     *   consolidation.relative_tolerance (Newton has no stiffness along
-     *   the mechanisms of an unjammed bed), and that relaxed state is the
-     *   converged state the history update applies to; above it the
+     *   consolidation.jamming_pressure on the punches a step is balanced
+     *   at fixed internal variables by the minimiser unjammed_equilibrium
+     *   selects (Newton has no stiffness along the mechanisms of an
+     *   unjammed bed), and that balanced state is the converged state the
+     *   history update applies to; above it the
      *   trust-region Newton solves to EquilibriumOptions' tolerances.
      *   Contact forces below force_resolution() grow no plastic radius.
      * - true (frozen-history consolidation, the former default, kept for
@@ -67,7 +67,7 @@ namespace compax::dem
     /// Bonded path: the converged state of an unjammed step
     /// (LoadSteppingOptions::unjammed_equilibrium).
     UnjammedEquilibrium unjammed_equilibrium
-      = UnjammedEquilibrium::balanced_relaxation;
+      = UnjammedEquilibrium::balanced_lbfgs;
     /// Elastic frictionless spheres instead of the ContactModel's bonded
     /// elasto-plastic law: Hertz, or the nonlocal contact formulation of
     /// Gonzalez & Cuitino 2012 (elastic->nonlocal), stepped by an

@@ -55,11 +55,12 @@ namespace compax::dem
     /// hands its state to Newton too), or the relaxation run to the
     /// equilibrium options' force tolerance, or below force_tolerance times
     /// a particle's share of the jamming pressure, within
-    /// balanced_iterations (balanced_relaxation; balanced_lbfgs minimises
-    /// by L-BFGS instead of FIRE).
+    /// balanced_iterations (balanced_relaxation; balanced_lbfgs, the
+    /// default, minimises by L-BFGS instead of FIRE).
     UnjammedEquilibrium unjammed_equilibrium
-      = UnjammedEquilibrium::balanced_relaxation;
-    /// FIRE iterations allowed per balanced relaxation.
+      = UnjammedEquilibrium::balanced_lbfgs;
+    /// FIRE iterations, or L-BFGS residual evaluations, allowed per
+    /// balanced relaxation.
     int balanced_iterations = 200000;
     /// FIRE iterations allowed per unjammed sub-step.
     int fire_iterations = 20000;

@@ -1,6 +1,7 @@
 #include "dem/solver/fire_relaxation.h"
 
 #include "dem/solver/die_bed_system.h"
+#include "dem/solver/residual_norms.h"
 #include "dem/solver/stiffness_scaling.h"
 
 #include "dem/solver/trust_region_newton.h"
@@ -54,11 +55,10 @@ namespace compax::dem
     auto x = system.coordinates();
     for (int it = 0;; ++it)
       {
-        const double fmax = max_particle_norm(F);
-        result.relative_residual
-          = sums.mean_force > 0.0 ? fmax / sums.mean_force : 0.0;
-        result.iterations = it;
-        if (fmax <= target * sums.mean_force || fmax <= force_floor)
+        const auto balance = relaxation_balance(F, sums, target, force_floor);
+        result.relative_residual = balance.relative_residual;
+        result.iterations        = it;
+        if (balance.balanced)
           {
             result.converged = true;
             break;

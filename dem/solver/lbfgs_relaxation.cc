@@ -1,6 +1,7 @@
 #include "dem/solver/lbfgs_relaxation.h"
 
 #include "dem/solver/die_bed_system.h"
+#include "dem/solver/residual_norms.h"
 #include "dem/solver/stiffness_scaling.h"
 #include "dem/solver/trust_region_newton.h"
 
@@ -110,11 +111,10 @@ namespace compax::dem
     auto x            = system.coordinates();
     for (;;)
       {
-        const double fmax = max_particle_norm(g);
-        result.relative_residual
-          = sums.mean_force > 0.0 ? fmax / sums.mean_force : 0.0;
-        result.iterations = evaluations;
-        if (fmax <= target * sums.mean_force || fmax <= force_floor)
+        const auto balance = relaxation_balance(g, sums, target, force_floor);
+        result.relative_residual = balance.relative_residual;
+        result.iterations        = evaluations;
+        if (balance.balanced)
           {
             result.converged = true;
             break;

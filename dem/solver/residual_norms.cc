@@ -23,4 +23,17 @@ namespace compax::dem
       return fmax / sums.mean_force;
     return fmax == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
   }
+
+  RelaxationBalance
+  relaxation_balance(const Eigen::VectorXd &F,
+                     const ContactSums     &sums,
+                     const double           target,
+                     const double           force_floor)
+  {
+    const double      fmax = max_particle_norm(F);
+    RelaxationBalance b;
+    b.relative_residual = sums.mean_force > 0.0 ? fmax / sums.mean_force : 0.0;
+    b.balanced = fmax <= target * sums.mean_force || fmax <= force_floor;
+    return b;
+  }
 } // namespace compax::dem

@@ -15,4 +15,22 @@ namespace compax::dem
   /// loaded contacts.
   double
   relative_residual(const Eigen::VectorXd &F, const ContactSums &sums);
+
+  /// Where a relaxation (FIRE, L-BFGS) stands against its stopping test.
+  struct RelaxationBalance
+  {
+    /// max_i |F_i| / mean contact force, 0 without loaded contacts [-].
+    double relative_residual = 0.0;
+    /// max_i |F_i| <= target * mean contact force, or <= the force floor.
+    bool balanced = false;
+  };
+
+  /// The stopping test the relaxations share: balanced to @p target [-]
+  /// of the mean contact force, or every particle force below
+  /// @p force_floor [N] (a loose bed whose contacts carry nothing).
+  RelaxationBalance
+  relaxation_balance(const Eigen::VectorXd &F,
+                     const ContactSums     &sums,
+                     double                 target,
+                     double                 force_floor);
 } // namespace compax::dem

@@ -28,6 +28,12 @@ namespace
     spec.shear_steps            = 4;
     spec.radial_ratios          = {};
     spec.denser_deposit         = dem::DenserDeposit::keep;
+    // The subject is the single writer, not the fit. A 60-sphere cell is
+    // too small for a robust cap fit: balanced by L-BFGS (the default) its
+    // compaction state lies above its own shear line and the fit refuses
+    // the table; the FIRE-balanced cell's fit holds.
+    spec.loading.unjammed_equilibrium
+      = dem::UnjammedEquilibrium::balanced_relaxation;
     return spec;
   }
 
