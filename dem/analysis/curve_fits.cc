@@ -131,10 +131,13 @@ namespace compax::dem
     // Variable projection on a grid of (rho_c, theta): the model is linear
     // in (Z_c, Z_0) there.
     Eigen::VectorXd best(4);
-    double          best_rms = std::numeric_limits<double>::infinity();
+    double          best_rms    = std::numeric_limits<double>::infinity();
+    double          largest_gap = 0.0, largest_theta = 0.0;
     for (double gap = 1e-4; gap < 0.3; gap *= 1.5)
       for (double theta = 0.1; theta < 2.0; theta += 0.05)
         {
+          largest_gap   = gap;
+          largest_theta = theta;
           std::vector<double> t(rho.size());
           for (std::size_t i = 0; i < rho.size(); ++i)
             t[i] = std::pow(rho[i] - rho_min + gap, theta);
@@ -155,13 +158,26 @@ namespace compax::dem
     Eigen::VectorXd refined = best;
     double          rms     = levenberg_marquardt(model, refined, rho, Z);
     const double    theta   = std::exp(refined[3]);
+    bool            refined_stands = false;
     if (theta >= 0.1 && theta <= 2.0 && std::exp(refined[2]) < 0.3
         && rms <= best_rms)
-      best = refined;
+      {
+        best           = refined;
+        refined_stands = true;
+      }
     else
       rms = best_rms;
-    return {
+    CoordinationFit fit{
       best[0], best[1], rho_min - std::exp(best[2]), std::exp(best[3]), rms};
+    // Where the grid point stands, it is on the edge if its exponent or
+    // gap is the grid's first or last; a refined optimum is inside.
+    const auto same
+      = [](double a, double b) { return std::abs(a - b) <= 1e-9 * b; };
+    fit.on_search_edge
+      = !refined_stands
+        && (same(fit.theta, 0.1) || same(fit.theta, largest_theta)
+            || same(rho_min - fit.rho_c, largest_gap));
+    return fit;
   }
 
   PunchPressureFit

@@ -18,6 +18,11 @@ namespace compax::dem
     double Z_c, Z_0, rho_c, theta;
     /// Root-mean-square residual of the fit.
     double rms;
+    /// The optimum stands on the edge of the searched range (theta at
+    /// its smallest or largest grid value, or rho_c at the largest grid
+    /// distance below the data): the states do not determine a power law
+    /// of the form of Eq. (14), e.g. when none lies near the onset.
+    bool on_search_edge = false;
   };
 
   /// Eq. (15): sigma = K_p (rho - rho_c)^beta_p, rho_c given (from Eq. 14).
@@ -40,7 +45,8 @@ namespace compax::dem
 
   /// Fits Eq. (14); needs at least 5 points with rho above jamming. The
   /// exponent is sought in [0.1, 2] and rho_c within 0.3 below the
-  /// smallest rho (outside, the least-squares optimum is no power law).
+  /// smallest rho (outside, the least-squares optimum is no power law);
+  /// CoordinationFit::on_search_edge marks an optimum on that edge.
   CoordinationFit
   fit_coordination(const std::vector<double> &rho,
                    const std::vector<double> &Z);

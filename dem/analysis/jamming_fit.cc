@@ -29,7 +29,10 @@ namespace compax::dem
       return std::nullopt;
     try
       {
-        return fit_coordination(rho, Z);
+        const CoordinationFit fit = fit_coordination(rho, Z);
+        if (fit.on_search_edge)
+          return std::nullopt;
+        return fit;
       }
     catch (const std::exception &)
       {

@@ -47,6 +47,27 @@ TEST(CurveFits, CoordinationPowerLawOfEquation14IsRecovered)
   EXPECT_NEAR(fit.rho_c, rho_c, 1e-5);
   EXPECT_NEAR(fit.theta, theta, 1e-4);
   EXPECT_LT(fit.rms, 1e-8);
+  EXPECT_FALSE(fit.on_search_edge);
+}
+
+TEST(CurveFits, JammingFitRefusesStatesThatDetermineNoPowerLaw)
+{
+  // States that follow a logarithm, Z = 6 + 2 ln(rho - 0.55), from 0.632
+  // on, as after a consolidation that jumps past the onset: the least
+  // squares drive theta -> 0 and Z_c -> -infinity, so the optimum stands
+  // on the smallest exponent searched. Eq. 14 is then not fitted.
+  std::vector<CompactionState> states;
+  std::vector<double>          rho, Z;
+  for (double r : densities(0.632, 0.80, 30))
+    {
+      rho.push_back(r);
+      Z.push_back(6.0 + 2.0 * std::log(r - 0.55));
+      states.push_back({r, 1e7, Z.back()});
+    }
+  const auto fit = fit_coordination(rho, Z);
+  EXPECT_TRUE(fit.on_search_edge);
+  EXPECT_NEAR(fit.theta, 0.1, 1e-9);
+  EXPECT_FALSE(fit_jamming(states, 1e3).has_value());
 }
 
 TEST(CurveFits, JammingFitUsesOnlyStatesAboveThePressureResolution)
