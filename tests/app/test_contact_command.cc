@@ -174,6 +174,49 @@ TEST_F(ContactCommand, EveryLawRunsAndMulticontactReducesToHertz)
     }
 }
 
+TEST_F(ContactCommand, WaltonBraunFollowsItsLoadingUnloadingAndAdhesiveBranches)
+{
+  // Sphere on a flat, R = 10 um, k1 = 100 N/m, k2_max = 4 k1, kc = k1/2,
+  // phi_F = 0.05: delta* = 4/3 * 0.05 * 2R = 1.333 um. Loaded to 1 um,
+  // unloaded to 0.2 um, reloaded to 0.8 um; every sample is a converged
+  // state. The branches, written out here from Luding's definition:
+  // k2 = k1 + 3 k1 min(1, d_max/d*), d_0 = (1 - k1/k2) d_max, loading
+  // k1 d, un/reloading k2 (d - d_0), adhesion -kc d below
+  // d_min = (k2 - k1)/(k2 + kc) d_max.
+  write("wb.prm",
+        "set Law = walton-braun\nset Geometry = sphere-wall\n"
+        "subsection Particle 1\n set Radius = 10e-6\nend\n"
+        "subsection Walton-Braun\n set Loading stiffness = 100\n"
+        " set Unloading stiffness ratio = 4\n set Adhesion stiffness ratio = "
+        "0.5\n set Plasticity depth = 0.05\nend\n"
+        "subsection Overlap history\n set Turning points = 0, 1e-6, 0.2e-6, "
+        "0.8e-6\n set Steps per segment = 40\nend\n");
+  ASSERT_EQ(compax("contact wb.prm -o wb").exit_code, 0);
+  const Csv    csv(folder / "wb" / "contact.csv");
+  const double k1 = 100, k2_max = 400, kc = 50, limit = 4.0 / 3.0 * 0.05 * 2e-5;
+  double       d_max    = 0.0;
+  int          adhesive = 0, unloading = 0;
+  for (std::size_t i = 0; i < csv.rows(); ++i)
+    {
+      const double d     = csv.column.at("gamma")[i];
+      const double k2    = k1 + (k2_max - k1) * std::min(1.0, d_max / limit);
+      const double d0    = (1 - k1 / k2) * d_max;
+      const double d_min = (k2 - k1) / (k2 + kc) * d_max;
+      double       P     = 0.0;
+      if (d >= d_max)
+        P = k1 * d;
+      else if (d > d_min)
+        P = k2 * (d - d0), ++unloading;
+      else if (d > 0)
+        P = -kc * d, ++adhesive;
+      EXPECT_NEAR(csv.column.at("force")[i], P, 1e-5 * std::abs(P) + 1e-12)
+        << "row " << i << ", gamma " << d;
+      d_max = std::max(d_max, d);
+    }
+  EXPECT_GT(unloading, 0);
+  EXPECT_GT(adhesive, 0);
+}
+
 TEST_F(ContactCommand, EveryShippedParameterFileIsValid)
 {
   // apps/parameters/<command>_*.prm must parse and pass the command's checks.

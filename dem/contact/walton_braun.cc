@@ -1,0 +1,116 @@
+#include "dem/contact/walton_braun.h"
+
+#include "dem/contact/pair_properties.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace compax::dem
+{
+  WaltonBraunLaw::WaltonBraunLaw(const double      effective_radius,
+                                 const Parameters &parameters)
+      : R(effective_radius)
+      , p(parameters)
+      , k1(parameters.loading_stiffness)
+      , k2_max(parameters.unloading_stiffness_ratio
+               * parameters.loading_stiffness)
+      , kc(parameters.adhesion_stiffness_ratio * parameters.loading_stiffness)
+  {
+    if (!(parameters.loading_stiffness > 0.0))
+      throw std::invalid_argument("walton-braun: k1 must be positive");
+    if (!(parameters.unloading_stiffness_ratio >= 1.0))
+      throw std::invalid_argument("walton-braun: k2/k1 must be at least 1");
+    if (!(parameters.adhesion_stiffness_ratio >= 0.0))
+      throw std::invalid_argument("walton-braun: kc/k1 must not be negative");
+    if (!(parameters.plasticity_depth >= 0.0))
+      throw std::invalid_argument("walton-braun: phi_F must not be negative");
+  }
+
+  WaltonBraunLaw
+  WaltonBraunLaw::for_pair(const double      R1,
+                           const double      R2,
+                           const Parameters &parameters)
+  {
+    return WaltonBraunLaw(dem::effective_radius(R1, R2), parameters);
+  }
+
+  double
+  WaltonBraunLaw::plastic_flow_limit() const
+  {
+    if (k2_max == k1)
+      return std::numeric_limits<double>::infinity();
+    return k2_max / (k2_max - k1) * p.plasticity_depth * 2.0 * R;
+  }
+
+  double
+  WaltonBraunLaw::unloading_stiffness(const double delta_max) const
+  {
+    const double limit = plastic_flow_limit();
+    if (k2_max == k1 || delta_max >= limit)
+      return k2_max;
+    return k1 + (k2_max - k1) * std::max(delta_max, 0.0) / limit;
+  }
+
+  double
+  WaltonBraunLaw::plastic_overlap(const double delta_max) const
+  {
+    if (delta_max <= 0.0)
+      return 0.0;
+    return (1.0 - k1 / unloading_stiffness(delta_max)) * delta_max;
+  }
+
+  double
+  WaltonBraunLaw::minimum_overlap(const double delta_max) const
+  {
+    if (delta_max <= 0.0)
+      return 0.0;
+    const double k2 = unloading_stiffness(delta_max);
+    return (k2 - k1) / (k2 + kc) * delta_max;
+  }
+
+  ContactResponse
+  WaltonBraunLaw::response(const double delta, const double delta_max) const
+  {
+    if (delta <= 0.0)
+      return {};
+    ContactResponse r;
+    r.contact_radius = std::sqrt(R * delta);
+    if (delta >= delta_max)
+      {
+        r.force     = k1 * delta;
+        r.stiffness = k1;
+      }
+    else if (delta > minimum_overlap(delta_max))
+      {
+        const double k2 = unloading_stiffness(delta_max);
+        r.force         = k2 * (delta - plastic_overlap(delta_max));
+        r.stiffness     = k2;
+      }
+    else
+      {
+        r.force     = -kc * delta;
+        r.stiffness = -kc;
+      }
+    return r;
+  }
+
+  ContactResponse
+  WaltonBraunLaw::evaluate(const double          gamma,
+                           const ContactHistory &history,
+                           const ContactContext &) const
+  {
+    return response(gamma, history.delta_max);
+  }
+
+  ContactHistory
+  WaltonBraunLaw::updated_history(const double          gamma,
+                                  const ContactHistory &history,
+                                  const ContactContext &) const
+  {
+    ContactHistory h = history;
+    h.delta_max      = std::max(h.delta_max, gamma);
+    return h;
+  }
+} // namespace compax::dem
