@@ -2,11 +2,11 @@
 
 #include "apps/cli/parameters.h"
 #include "dem/contact/bonded_elastoplastic.h"
+#include "dem/contact/contact_law_registry.h"
 #include "dem/contact/hertz.h"
 #include "dem/contact/multicontact_adhesive.h"
 #include "dem/contact/nonlocal_hertz.h"
 #include "dem/contact/pair_properties.h"
-#include "dem/contact/walton_braun.h"
 
 #include <sstream>
 
@@ -169,78 +169,66 @@ namespace compax::cli
       return pair;
     }
 
-    /// Walton-Braun/Luding: the spring constants are the .prm's own, as
-    /// the explicit-DEM peer sets them (its k1 is not derived from the
-    /// particles' elastic or plastic constants).
+    /// A law of the registry (contact_law_registry.h), from the values of
+    /// its own subsection.
     ContactPair
-    make_walton_braun_pair(dealii::ParameterHandler &prm,
-                           const Body               &body1,
-                           const Body               &body2)
+    make_registered_pair(dealii::ParameterHandler        &prm,
+                         const dem::RegisteredContactLaw &law,
+                         const Body                      &body1,
+                         const Body                      &body2)
     {
-      prm.enter_subsection("Walton-Braun");
-      dem::WaltonBraunLaw::Parameters parameters;
-      parameters.loading_stiffness = prm.get_double("Loading stiffness");
-      parameters.unloading_stiffness_ratio
-        = prm.get_double("Unloading stiffness ratio");
-      parameters.adhesion_stiffness_ratio
-        = prm.get_double("Adhesion stiffness ratio");
-      parameters.plasticity_depth = prm.get_double("Plasticity depth");
+      prm.enter_subsection(law.subsection);
+      dem::LawParameterValues values;
+      for (const dem::LawParameter &p : law.parameters)
+        values[p.name] = prm.get_double(p.name);
       prm.leave_subsection();
-
-      auto law = std::make_unique<dem::WaltonBraunLaw>(
-        dem::WaltonBraunLaw::for_pair(body1.radius, body2.radius, parameters));
       ContactPair pair;
-      const auto *spring = law.get();
-      pair.closed_forms  = [spring](const double gamma_max) {
-        return std::vector<std::string>{
-          format("unloading stiffness k2   ",
-                 spring->unloading_stiffness(gamma_max),
-                 "N/m (at the largest overlap)"),
-          format("plastic overlap delta_0  ",
-                 spring->plastic_overlap(gamma_max),
-                 "m (zero force on unloading)"),
-          format("flow limit delta*        ",
-                 spring->plastic_flow_limit(),
-                 "m")};
-      };
-      pair.law = std::move(law);
+      pair.law = law.make(values, body1.radius, body2.radius);
       return pair;
     }
 
+    /// Each registered law's subsection, as the law declares it.
     void
-    declare_walton_braun(dealii::ParameterHandler &prm)
+    declare_registered_laws(dealii::ParameterHandler &prm)
     {
-      prm.enter_subsection("Walton-Braun");
-      declare_quantity(prm,
-                       "Loading stiffness",
-                       "6.09e4",
-                       positive(),
-                       "N/m",
-                       "k1 > 0: the plastic loading stiffness (6.09e4 N/m: "
-                       "the explicit-DEM peer's pair value for Material 1, "
-                       "../shared/peer/README.md).");
-      declare_quantity(prm,
-                       "Unloading stiffness ratio",
-                       "22",
-                       RealInterval(1.0, false, 1e12, false),
-                       "-",
-                       "k2_max/k1 >= 1: the largest un/reloading stiffness "
-                       "over k1.");
-      declare_quantity(prm,
-                       "Adhesion stiffness ratio",
-                       "0",
-                       non_negative(),
-                       "-",
-                       "kc/k1 >= 0: the adhesive branch (0: no adhesion).");
-      declare_quantity(prm,
-                       "Plasticity depth",
-                       "0.573",
-                       non_negative(),
-                       "-",
-                       "phi_F >= 0: plasticity depth relative to 2R; the "
-                       "un/reloading stiffness reaches k2_max at the overlap "
-                       "k2_max/(k2_max - k1) phi_F 2R.");
-      prm.leave_subsection();
+      for (const dem::RegisteredContactLaw &law :
+           dem::registered_contact_laws())
+        {
+          prm.enter_subsection(law.subsection);
+          for (const dem::LawParameter &p : law.parameters)
+            declare_quantity(
+              prm,
+              p.name,
+              format_number(p.default_value),
+              RealInterval(p.lower, p.lower_open, p.upper, p.upper_open),
+              p.unit,
+              p.documentation);
+          prm.leave_subsection();
+        }
+    }
+
+    /// "hertz|...": the built-in laws, then the registered ones.
+    std::string
+    law_names()
+    {
+      std::string names
+        = "hertz|bonded-elastoplastic|nonlocal-hertz|multicontact-adhesive";
+      for (const dem::RegisteredContactLaw &law :
+           dem::registered_contact_laws())
+        names += "|" + law.name;
+      return names;
+    }
+
+    /// The registered laws' part of the Law documentation.
+    std::string
+    registered_law_documentation()
+    {
+      std::string text;
+      for (const dem::RegisteredContactLaw &law :
+           dem::registered_contact_laws())
+        text += "; " + law.name + " (" + law.description + "; subsection "
+                + law.subsection + ")";
+      return text;
     }
 
     void
@@ -298,18 +286,14 @@ namespace compax::cli
   {
     prm.declare_entry("Law",
                       "bonded-elastoplastic",
-                      dealii::Patterns::Selection(
-                        "hertz|bonded-elastoplastic|nonlocal-hertz|"
-                        "multicontact-adhesive|walton-braun"),
+                      dealii::Patterns::Selection(law_names()),
                       "Contact law: hertz (elastic spheres); "
                       "bonded-elastoplastic (Gonzalez 2018, Eqs. 3-5, 13); "
                       "nonlocal-hertz (Gonzalez & Cuitino 2012, Eqs. 9-11, "
                       "in Tatara's configuration: each sphere held at its far "
                       "pole); multicontact-adhesive (Giannis 2021, Eqs. "
-                      "6-14; subsection Multi-contact); walton-braun (the "
-                      "hysteretic linear spring of Walton & Braun and "
-                      "Luding, LIGGGHTS' hooke/hysteresis; subsection "
-                      "Walton-Braun).");
+                      "6-14; subsection Multi-contact)"
+                        + registered_law_documentation() + ".");
     prm.declare_entry("Geometry",
                       "sphere-wall",
                       dealii::Patterns::Selection("sphere-sphere|sphere-wall"),
@@ -360,7 +344,7 @@ namespace compax::cli
                      "(Gonzalez 2018 recommends 0.01, Sec. 3.2).");
     prm.leave_subsection();
     declare_multicontact(prm);
-    declare_walton_braun(prm);
+    declare_registered_laws(prm);
   }
 
   ContactPair
@@ -384,8 +368,8 @@ namespace compax::cli
       pair = make_nonlocal_pair(body1, body2);
     else if (law == "multicontact-adhesive")
       pair = make_multicontact_pair(prm, body1, body2);
-    else if (law == "walton-braun")
-      pair = make_walton_braun_pair(prm, body1, body2);
+    else if (const auto *registered = dem::find_contact_law(law))
+      pair = make_registered_pair(prm, *registered, body1, body2);
     else
       pair = make_bonded_pair(prm, body1, body2, wall);
     pair.geometry = geometry;

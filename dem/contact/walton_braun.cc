@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 namespace compax::dem
@@ -34,6 +35,63 @@ namespace compax::dem
                            const Parameters &parameters)
   {
     return WaltonBraunLaw(dem::effective_radius(R1, R2), parameters);
+  }
+
+  RegisteredContactLaw
+  WaltonBraunLaw::registration()
+  {
+    const double         inf = std::numeric_limits<double>::infinity();
+    RegisteredContactLaw r;
+    r.name        = "walton-braun";
+    r.description = "the hysteretic linear spring of Walton & Braun and "
+                    "Luding (LIGGGHTS' hooke/hysteresis)";
+    r.subsection  = "Walton-Braun";
+    r.parameters
+      = {{"Loading stiffness",
+          6.09e4,
+          0.0,
+          true,
+          inf,
+          true,
+          "N/m",
+          "k1 > 0: the plastic loading stiffness (6.09e4 N/m: the "
+          "explicit-DEM peer's pair value for Material 1, "
+          "../shared/peer/README.md)."},
+         {"Unloading stiffness ratio",
+          22.0,
+          1.0,
+          false,
+          1e12,
+          false,
+          "-",
+          "k2_max/k1 >= 1: the largest un/reloading stiffness over k1."},
+         {"Adhesion stiffness ratio",
+          0.0,
+          0.0,
+          false,
+          inf,
+          true,
+          "-",
+          "kc/k1 >= 0: the adhesive branch (0: no adhesion)."},
+         {"Plasticity depth",
+          0.573,
+          0.0,
+          false,
+          inf,
+          true,
+          "-",
+          "phi_F >= 0: plasticity depth relative to 2R; the un/reloading "
+          "stiffness reaches k2_max at the overlap k2_max/(k2_max - k1) "
+          "phi_F 2R."}};
+    r.make = [](const LawParameterValues &v, const double R1, const double R2) {
+      Parameters p;
+      p.loading_stiffness         = v.at("Loading stiffness");
+      p.unloading_stiffness_ratio = v.at("Unloading stiffness ratio");
+      p.adhesion_stiffness_ratio  = v.at("Adhesion stiffness ratio");
+      p.plasticity_depth          = v.at("Plasticity depth");
+      return std::make_unique<WaltonBraunLaw>(for_pair(R1, R2, p));
+    };
+    return r;
   }
 
   double

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "dem/contact/contact_law.h"
+#include "dem/contact/contact_law_registry.h"
 
 namespace compax::dem
 {
@@ -53,6 +54,11 @@ namespace compax::dem
     /// for a wall.
     static WaltonBraunLaw
     for_pair(double R1, double R2, const Parameters &parameters);
+
+    /// The law's parameters with their ranges and units, and its builder,
+    /// for the command line (contact_law_registry.h).
+    static RegisteredContactLaw
+    registration();
 
     using ContactLaw::evaluate;
     using ContactLaw::updated_history;

@@ -11,6 +11,7 @@
 // 1.6e4 / 3.1e4 * 1e-5 m, and at 3e-6 m the adhesive force is -5e3 * 3e-6
 // = -0.015 N.
 
+#include "dem/contact/contact_law_registry.h"
 #include "dem/contact/walton_braun.h"
 
 #include "dem/contact/pair_properties.h"
@@ -143,4 +144,38 @@ TEST(WaltonBraun, RejectsParametersOutsideTheirRange)
   p                          = hand_parameters();
   p.adhesion_stiffness_ratio = -1.0;
   EXPECT_THROW(WaltonBraunLaw(1e-4, p), std::invalid_argument);
+}
+
+TEST(ContactLawRegistry, EveryLawBuildsFromItsOwnDefaultsUnderItsName)
+{
+  ASSERT_FALSE(registered_contact_laws().empty());
+  for (const RegisteredContactLaw &entry : registered_contact_laws())
+    {
+      LawParameterValues defaults;
+      for (const LawParameter &p : entry.parameters)
+        {
+          EXPECT_TRUE(defaults.emplace(p.name, p.default_value).second)
+            << entry.name << ": " << p.name << " declared twice";
+          EXPECT_FALSE(p.unit.empty()) << entry.name << ": " << p.name;
+        }
+      const auto law = entry.make(defaults, 1e-4, rigid);
+      ASSERT_TRUE(law);
+      EXPECT_EQ(law->name(), entry.name);
+      EXPECT_EQ(find_contact_law(entry.name), &entry);
+    }
+  EXPECT_EQ(find_contact_law("no-such-law"), nullptr);
+
+  // The Walton-Braun entry builds the law of its values: k1 sets the
+  // loading branch against a wall (R = R1).
+  const RegisteredContactLaw *entry = find_contact_law("walton-braun");
+  ASSERT_NE(entry, nullptr);
+  LawParameterValues values{{"Loading stiffness", 1e4},
+                            {"Unloading stiffness ratio", 5.0},
+                            {"Adhesion stiffness ratio", 0.5},
+                            {"Plasticity depth", 0.1}};
+  const auto         law = entry->make(values, 1e-4, rigid);
+  EXPECT_NEAR(law->evaluate(1e-6, ContactHistory{}).force, 1e-2, 1e-16);
+  EXPECT_NEAR(dynamic_cast<const WaltonBraunLaw &>(*law).plastic_flow_limit(),
+              5.0 / 4.0 * 0.1 * 2e-4,
+              1e-18);
 }

@@ -1,0 +1,24 @@
+#include "dem/contact/contact_law_registry.h"
+
+#include "dem/contact/walton_braun.h"
+
+namespace compax::dem
+{
+  const std::vector<RegisteredContactLaw> &
+  registered_contact_laws()
+  {
+    static const std::vector<RegisteredContactLaw> laws = {
+      WaltonBraunLaw::registration(),
+    };
+    return laws;
+  }
+
+  const RegisteredContactLaw *
+  find_contact_law(const std::string &name)
+  {
+    for (const RegisteredContactLaw &law : registered_contact_laws())
+      if (law.name == name)
+        return &law;
+    return nullptr;
+  }
+} // namespace compax::dem
