@@ -3,9 +3,6 @@
 #include "apps/cli/parameters.h"
 #include "dem/contact/bonded_elastoplastic.h"
 #include "dem/contact/contact_law_registry.h"
-#include "dem/contact/hertz.h"
-#include "dem/contact/multicontact_adhesive.h"
-#include "dem/contact/nonlocal_hertz.h"
 #include "dem/contact/pair_properties.h"
 
 #include <sstream>
@@ -31,21 +28,6 @@ namespace compax::cli
                 get_surface_energy(prm)};
       prm.leave_subsection();
       return body;
-    }
-
-    /// A law built from the radii and elastic constants of the two bodies,
-    /// plus any law-specific arguments.
-    template <typename Law, typename... Extra>
-    std::unique_ptr<Law>
-    elastic_law(const Body &body1, const Body &body2, const Extra &...extra)
-    {
-      return std::make_unique<Law>(Law::for_pair(body1.radius,
-                                                 body1.material.youngs_modulus,
-                                                 body1.material.poisson_ratio,
-                                                 body2.radius,
-                                                 body2.material.youngs_modulus,
-                                                 body2.material.poisson_ratio,
-                                                 extra...));
     }
 
     std::string
@@ -112,63 +94,6 @@ namespace compax::cli
       return pair;
     }
 
-    /// Gonzalez & Cuitino 2012: the pair is the Tatara configuration, each
-    /// sphere held by the opposite force at its far pole, so gamma_NL is
-    /// found self-consistently at every overlap (Eqs. 9-11).
-    ContactPair
-    make_nonlocal_pair(const Body &body1, const Body &body2)
-    {
-      ContactPair pair;
-      pair.law     = elastic_law<dem::NonlocalHertzLaw>(body1, body2);
-      pair.context = [body1, body2](const double gamma) {
-        dem::ContactContext context;
-        if (gamma > 0.0)
-          context.nonlocal_overlap
-            = dem::solve_tatara_two_spheres(gamma,
-                                            body1.radius,
-                                            body1.material.youngs_modulus,
-                                            body1.material.poisson_ratio,
-                                            body2.radius,
-                                            body2.material.youngs_modulus,
-                                            body2.material.poisson_ratio)
-                .nonlocal_overlap;
-        return context;
-      };
-      return pair;
-    }
-
-    /// Giannis 2021: the particle pressure of both particles is a constant
-    /// of the .prm (in a packing the particle solver supplies it).
-    ContactPair
-    make_multicontact_pair(dealii::ParameterHandler &prm,
-                           const Body               &body1,
-                           const Body               &body2)
-    {
-      prm.enter_subsection("Multi-contact");
-      dem::MulticontactAdhesiveLaw::Parameters parameters;
-      parameters.unloading_stiffness_ratio
-        = prm.get_double("Unloading stiffness ratio");
-      parameters.adhesion_stiffness_ratio
-        = prm.get_double("Adhesion stiffness ratio");
-      parameters.plasticity_depth       = prm.get_double("Plasticity depth");
-      parameters.multicontact_prefactor = prm.get_double("Prefactor");
-      parameters.pull_off_force         = prm.get_double("Pull-off force");
-      parameters.poisson_ratio          = body1.material.poisson_ratio;
-      const double compressive_stress
-        = prm.get_double("Mean compressive stress");
-      prm.leave_subsection();
-
-      ContactPair pair;
-      pair.law
-        = elastic_law<dem::MulticontactAdhesiveLaw>(body1, body2, parameters);
-      pair.context = [compressive_stress](double) {
-        dem::ContactContext context;
-        context.particle_pressure = -compressive_stress;
-        return context;
-      };
-      return pair;
-    }
-
     /// A law of the registry (contact_law_registry.h), from the values of
     /// its own subsection.
     ContactPair
@@ -177,13 +102,24 @@ namespace compax::cli
                          const Body                      &body1,
                          const Body                      &body2)
     {
-      prm.enter_subsection(law.subsection);
       dem::LawParameterValues values;
-      for (const dem::LawParameter &p : law.parameters)
-        values[p.name] = prm.get_double(p.name);
-      prm.leave_subsection();
-      ContactPair pair;
-      pair.law = law.make(values, body1.radius, body2.radius);
+      if (!law.parameters.empty())
+        {
+          prm.enter_subsection(law.subsection);
+          for (const dem::LawParameter &p : law.parameters)
+            values[p.name] = prm.get_double(p.name);
+          prm.leave_subsection();
+        }
+      const dem::ContactBodies bodies{body1.radius,
+                                      body1.material.youngs_modulus,
+                                      body1.material.poisson_ratio,
+                                      body2.radius,
+                                      body2.material.youngs_modulus,
+                                      body2.material.poisson_ratio};
+      ContactPair              pair;
+      pair.law = law.make(values, bodies);
+      if (law.context)
+        pair.context = law.context(values, bodies);
       return pair;
     }
 
@@ -194,6 +130,8 @@ namespace compax::cli
       for (const dem::RegisteredContactLaw &law :
            dem::registered_contact_laws())
         {
+          if (law.parameters.empty())
+            continue;
           prm.enter_subsection(law.subsection);
           for (const dem::LawParameter &p : law.parameters)
             declare_quantity(
@@ -207,12 +145,11 @@ namespace compax::cli
         }
     }
 
-    /// "hertz|...": the built-in laws, then the registered ones.
+    /// "bonded-elastoplastic|...": the built-in law, then the registered ones.
     std::string
     law_names()
     {
-      std::string names
-        = "hertz|bonded-elastoplastic|nonlocal-hertz|multicontact-adhesive";
+      std::string names = "bonded-elastoplastic";
       for (const dem::RegisteredContactLaw &law :
            dem::registered_contact_laws())
         names += "|" + law.name;
@@ -226,58 +163,13 @@ namespace compax::cli
       std::string text;
       for (const dem::RegisteredContactLaw &law :
            dem::registered_contact_laws())
-        text += "; " + law.name + " (" + law.description + "; subsection "
-                + law.subsection + ")";
+        text += "; " + law.name + " (" + law.description
+                + (law.parameters.empty() ? std::string()
+                                          : "; subsection " + law.subsection)
+                + ")";
       return text;
     }
 
-    void
-    declare_multicontact(dealii::ParameterHandler &prm)
-    {
-      prm.enter_subsection("Multi-contact");
-      declare_quantity(prm,
-                       "Unloading stiffness ratio",
-                       "120",
-                       RealInterval(1.0, false, 1e12, false),
-                       "-",
-                       "k2/k1 >= 1: largest unloading/reloading stiffness "
-                       "over the loading stiffness k1 = 4/3 E sqrt(R) "
-                       "(Giannis 2021, Eq. 11; 120 in Table 3).");
-      declare_quantity(prm,
-                       "Adhesion stiffness ratio",
-                       "0.5",
-                       non_negative(),
-                       "-",
-                       "kc/k1 >= 0: adhesive branch stiffness (Eq. 10).");
-      declare_quantity(prm,
-                       "Plasticity depth",
-                       "0.99",
-                       non_negative(),
-                       "-",
-                       "phi_f: dimensionless plasticity depth of Eq. (12).");
-      declare_quantity(prm,
-                       "Prefactor",
-                       "0",
-                       non_negative(),
-                       "-",
-                       "beta: multi-contact prefactor of Eq. (13) (0: the "
-                       "conventional, local model).");
-      declare_quantity(prm,
-                       "Pull-off force",
-                       "0",
-                       dealii::Patterns::Double(),
-                       "N",
-                       "F_0: constant pull-off force of Eq. (6).");
-      declare_quantity(prm,
-                       "Mean compressive stress",
-                       "0",
-                       dealii::Patterns::Double(),
-                       "Pa",
-                       "-(tr sigma_i + tr sigma_j)/3 of the two particles, "
-                       "positive in compression: the P_ij of Eq. (13), held "
-                       "constant along the history.");
-      prm.leave_subsection();
-    }
   } // namespace
 
   void
@@ -287,12 +179,8 @@ namespace compax::cli
     prm.declare_entry("Law",
                       "bonded-elastoplastic",
                       dealii::Patterns::Selection(law_names()),
-                      "Contact law: hertz (elastic spheres); "
-                      "bonded-elastoplastic (Gonzalez 2018, Eqs. 3-5, 13); "
-                      "nonlocal-hertz (Gonzalez & Cuitino 2012, Eqs. 9-11, "
-                      "in Tatara's configuration: each sphere held at its far "
-                      "pole); multicontact-adhesive (Giannis 2021, Eqs. "
-                      "6-14; subsection Multi-contact)"
+                      "Contact law: bonded-elastoplastic (Gonzalez 2018, "
+                      "Eqs. 3-5, 13; subsection Bonding)"
                         + registered_law_documentation() + ".");
     prm.declare_entry("Geometry",
                       "sphere-wall",
@@ -343,7 +231,6 @@ namespace compax::cli
                      "Regularization parameter xi_B > 0 of Eq. (4) "
                      "(Gonzalez 2018 recommends 0.01, Sec. 3.2).");
     prm.leave_subsection();
-    declare_multicontact(prm);
     declare_registered_laws(prm);
   }
 
@@ -362,13 +249,7 @@ namespace compax::cli
                0.0};
 
     ContactPair pair;
-    if (law == "hertz")
-      pair.law = elastic_law<dem::HertzLaw>(body1, body2);
-    else if (law == "nonlocal-hertz")
-      pair = make_nonlocal_pair(body1, body2);
-    else if (law == "multicontact-adhesive")
-      pair = make_multicontact_pair(prm, body1, body2);
-    else if (const auto *registered = dem::find_contact_law(law))
+    if (const auto *registered = dem::find_contact_law(law))
       pair = make_registered_pair(prm, *registered, body1, body2);
     else
       pair = make_bonded_pair(prm, body1, body2, wall);

@@ -1,5 +1,8 @@
 #include "dem/contact/contact_law_registry.h"
 
+#include "dem/contact/hertz.h"
+#include "dem/contact/multicontact_adhesive.h"
+#include "dem/contact/nonlocal_hertz.h"
 #include "dem/contact/walton_braun.h"
 
 namespace compax::dem
@@ -8,6 +11,9 @@ namespace compax::dem
   registered_contact_laws()
   {
     static const std::vector<RegisteredContactLaw> laws = {
+      HertzLaw::registration(),
+      NonlocalHertzLaw::registration(),
+      MulticontactAdhesiveLaw::registration(),
       WaltonBraunLaw::registration(),
     };
     return laws;

@@ -16,6 +16,18 @@ namespace compax::dem
    * A law joins every command that reads the registry through one line of
    * registered_contact_laws().
    */
+  /// The two bodies a law is built between: radii [m], Young's moduli [Pa]
+  /// and Poisson's ratios [-]; for a wall the second body has
+  /// compax::dem::rigid radius and modulus.
+  struct ContactBodies
+  {
+    double R1 = 0.0, E1 = 0.0, nu1 = 0.0;
+    double R2 = 0.0, E2 = 0.0, nu2 = 0.0;
+  };
+
+  /// The context of a law at overlap gamma [m] (ContactContext).
+  using ContactContextAt = std::function<ContactContext(double gamma)>;
+
   struct RegisteredContactLaw
   {
     /// Value of the Law selection, e.g. "walton-braun".
@@ -25,12 +37,15 @@ namespace compax::dem
     /// Subsection of the law's parameters.
     std::string               subsection;
     std::vector<LawParameter> parameters;
-    /// The law between bodies of radii R1 and R2 [m] (R2 =
-    /// compax::dem::rigid for a wall) for the parsed parameters.
+    /// The law between the bodies for the parsed parameters.
     std::function<std::unique_ptr<ContactLaw>(const LawParameterValues &values,
-                                              double                    R1,
-                                              double                    R2)>
+                                              const ContactBodies      &bodies)>
       make;
+    /// The context the law needs at each overlap of an isolated pair (a
+    /// nonlocal overlap, a particle pressure); empty: none.
+    std::function<ContactContextAt(const LawParameterValues &values,
+                                   const ContactBodies      &bodies)>
+      context;
   };
 
   /// The laws built from their own declarations, in the order offered.

@@ -3,6 +3,7 @@
 #include "dem/contact/pair_properties.h"
 
 #include <cmath>
+#include <memory>
 
 namespace compax::dem
 {
@@ -24,6 +25,20 @@ namespace compax::dem
   {
     return HertzLaw(dem::effective_radius(R1, R2),
                     dem::effective_modulus(E1, nu1, E2, nu2));
+  }
+
+  RegisteredContactLaw
+  HertzLaw::registration()
+  {
+    RegisteredContactLaw r;
+    r.name        = "hertz";
+    r.description = "elastic spheres";
+    r.subsection  = "Hertz";
+    r.make        = [](const LawParameterValues &, const ContactBodies &b) {
+      return std::make_unique<HertzLaw>(
+        for_pair(b.R1, b.E1, b.nu1, b.R2, b.E2, b.nu2));
+    };
+    return r;
   }
 
   ContactResponse

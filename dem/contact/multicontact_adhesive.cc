@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 
 namespace compax::dem
@@ -46,6 +47,90 @@ namespace compax::dem
     return MulticontactAdhesiveLaw(dem::effective_radius(R1, R2),
                                    dem::effective_modulus(E1, nu1, E2, nu2),
                                    parameters);
+  }
+
+  RegisteredContactLaw
+  MulticontactAdhesiveLaw::registration()
+  {
+    const double         inf = std::numeric_limits<double>::infinity();
+    RegisteredContactLaw r;
+    r.name        = "multicontact-adhesive";
+    r.description = "Giannis 2021, Eqs. 6-14";
+    r.subsection  = "Multi-contact";
+    r.parameters  = {
+       {"Unloading stiffness ratio",
+        120.0,
+        1.0,
+        false,
+        1e12,
+        false,
+        "-",
+        "k2/k1 >= 1: largest unloading/reloading stiffness over the loading "
+         "stiffness k1 = 4/3 E sqrt(R) (Giannis 2021, Eq. 11; 120 in Table 3)."},
+       {"Adhesion stiffness ratio",
+        0.5,
+        0.0,
+        false,
+        inf,
+        true,
+        "-",
+        "kc/k1 >= 0: adhesive branch stiffness (Eq. 10)."},
+       {"Plasticity depth",
+        0.99,
+        0.0,
+        false,
+        inf,
+        true,
+        "-",
+        "phi_f: dimensionless plasticity depth of Eq. (12)."},
+       {"Prefactor",
+        0.0,
+        0.0,
+        false,
+        inf,
+        true,
+        "-",
+        "beta: multi-contact prefactor of Eq. (13) (0: the conventional, "
+         "local model)."},
+       {"Pull-off force",
+        0.0,
+        -inf,
+        true,
+        inf,
+        true,
+        "N",
+        "F_0: constant pull-off force of Eq. (6)."},
+       {"Mean compressive stress",
+        0.0,
+        -inf,
+        true,
+        inf,
+        true,
+        "Pa",
+        "-(tr sigma_i + tr sigma_j)/3 of the two particles, positive in "
+         "compression: the P_ij of Eq. (13), held constant along the history."}};
+    r.make = [](const LawParameterValues &v, const ContactBodies &b) {
+      Parameters p;
+      p.unloading_stiffness_ratio = v.at("Unloading stiffness ratio");
+      p.adhesion_stiffness_ratio  = v.at("Adhesion stiffness ratio");
+      p.plasticity_depth          = v.at("Plasticity depth");
+      p.multicontact_prefactor    = v.at("Prefactor");
+      p.pull_off_force            = v.at("Pull-off force");
+      p.poisson_ratio             = b.nu1;
+      return std::make_unique<MulticontactAdhesiveLaw>(
+        for_pair(b.R1, b.E1, b.nu1, b.R2, b.E2, b.nu2, p));
+    };
+    // In a packing the particle solver supplies P_ij; for one pair it is
+    // a constant of the parameters.
+    r.context = [](const LawParameterValues &v, const ContactBodies &) {
+      const double compressive_stress = v.at("Mean compressive stress");
+      return ContactContextAt([compressive_stress](double) {
+        ContactContext context;
+        context.particle_pressure = -compressive_stress;
+        return context;
+      });
+    };
+    return r;
   }
 
   double

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace compax::dem
 {
@@ -50,6 +51,33 @@ namespace compax::dem
       , n_H(4.0 / 3.0 * effective_modulus * std::sqrt(effective_radius))
       , sqrt_R(std::sqrt(effective_radius))
   {
+  }
+
+  RegisteredContactLaw
+  NonlocalHertzLaw::registration()
+  {
+    RegisteredContactLaw r;
+    r.name        = "nonlocal-hertz";
+    r.description = "Gonzalez & Cuitino 2012, Eqs. 9-11, in Tatara's "
+                    "configuration: each sphere held at its far pole";
+    r.subsection  = "Nonlocal Hertz";
+    r.make        = [](const LawParameterValues &, const ContactBodies &b) {
+      return std::make_unique<NonlocalHertzLaw>(
+        for_pair(b.R1, b.E1, b.nu1, b.R2, b.E2, b.nu2));
+    };
+    // gamma_NL is found self-consistently at every overlap of the pair.
+    r.context = [](const LawParameterValues &, const ContactBodies &b) {
+      return ContactContextAt([b](const double gamma) {
+        ContactContext context;
+        if (gamma > 0.0)
+          context.nonlocal_overlap
+            = solve_tatara_two_spheres(
+                gamma, b.R1, b.E1, b.nu1, b.R2, b.E2, b.nu2)
+                .nonlocal_overlap;
+        return context;
+      });
+    };
+    return r;
   }
 
   NonlocalHertzLaw

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "dem/contact/contact_law.h"
+#include "dem/contact/contact_law_registry.h"
 
 #include <Eigen/Core>
 
@@ -90,6 +91,11 @@ namespace compax::dem
              double R2,
              double E2,
              double nu2);
+
+    /// The law's parameters and builder for the command line
+    /// (contact_law_registry.h).
+    static RegisteredContactLaw
+    registration();
 
     using ContactLaw::evaluate;
     using ContactLaw::updated_history;

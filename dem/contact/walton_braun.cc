@@ -83,13 +83,13 @@ namespace compax::dem
           "phi_F >= 0: plasticity depth relative to 2R; the un/reloading "
           "stiffness reaches k2_max at the overlap k2_max/(k2_max - k1) "
           "phi_F 2R."}};
-    r.make = [](const LawParameterValues &v, const double R1, const double R2) {
+    r.make = [](const LawParameterValues &v, const ContactBodies &b) {
       Parameters p;
       p.loading_stiffness         = v.at("Loading stiffness");
       p.unloading_stiffness_ratio = v.at("Unloading stiffness ratio");
       p.adhesion_stiffness_ratio  = v.at("Adhesion stiffness ratio");
       p.plasticity_depth          = v.at("Plasticity depth");
-      return std::make_unique<WaltonBraunLaw>(for_pair(R1, R2, p));
+      return std::make_unique<WaltonBraunLaw>(for_pair(b.R1, b.R2, p));
     };
     return r;
   }

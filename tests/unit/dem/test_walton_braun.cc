@@ -158,10 +158,15 @@ TEST(ContactLawRegistry, EveryLawBuildsFromItsOwnDefaultsUnderItsName)
             << entry.name << ": " << p.name << " declared twice";
           EXPECT_FALSE(p.unit.empty()) << entry.name << ": " << p.name;
         }
-      const auto law = entry.make(defaults, 1e-4, rigid);
+      const ContactBodies wall{1e-4, 5e9, 0.25, rigid, rigid, 0.0};
+      const auto          law = entry.make(defaults, wall);
       ASSERT_TRUE(law);
       EXPECT_EQ(law->name(), entry.name);
       EXPECT_EQ(find_contact_law(entry.name), &entry);
+      // A context, where a law declares one, is a function of the overlap.
+      if (entry.context)
+        EXPECT_TRUE(
+          std::isfinite(entry.context(defaults, wall)(1e-7).nonlocal_overlap));
     }
   EXPECT_EQ(find_contact_law("no-such-law"), nullptr);
 
@@ -173,7 +178,8 @@ TEST(ContactLawRegistry, EveryLawBuildsFromItsOwnDefaultsUnderItsName)
                             {"Unloading stiffness ratio", 5.0},
                             {"Adhesion stiffness ratio", 0.5},
                             {"Plasticity depth", 0.1}};
-  const auto         law = entry->make(values, 1e-4, rigid);
+  const auto         law
+    = entry->make(values, ContactBodies{1e-4, 5e9, 0.25, rigid, rigid, 0.0});
   EXPECT_NEAR(law->evaluate(1e-6, ContactHistory{}).force, 1e-2, 1e-16);
   EXPECT_NEAR(dynamic_cast<const WaltonBraunLaw &>(*law).plastic_flow_limit(),
               5.0 / 4.0 * 0.1 * 2e-4,
