@@ -136,20 +136,13 @@ namespace compax::dem
   double
   MulticontactAdhesiveLaw::plastic_flow_limit() const
   {
-    if (k2 == k1)
-      return std::numeric_limits<double>::infinity();
-    return k2 / (k2 - k1) * p.plasticity_depth * 2.0 * R;
+    return spring().plastic_flow_limit(p.plasticity_depth, R);
   }
 
   double
   MulticontactAdhesiveLaw::unloading_stiffness(const double delta_max) const
   {
-    if (k2 == k1)
-      return k1;
-    const double limit = plastic_flow_limit();
-    if (delta_max >= limit)
-      return k2;
-    return k1 + (k2 - k1) * delta_max / limit;
+    return spring().unloading_stiffness(delta_max, plastic_flow_limit());
   }
 
   double
@@ -197,20 +190,11 @@ namespace compax::dem
       }
     else
       {
-        const double k2s    = unloading_stiffness(delta_max);
-        const double x_max  = delta_max * std::sqrt(delta_max);
-        const double x0     = (1.0 - k1 / k2s) * x_max;
-        const double branch = k2s * (x - x0);
-        if (branch > -kc * x)
-          {
-            r.force     = branch;
-            r.stiffness = k2s * dx;
-          }
-        else
-          {
-            r.force     = -kc * x;
-            r.stiffness = -kc * dx;
-          }
+        const double x_max = delta_max * std::sqrt(delta_max);
+        double       slope = 0.0;
+        spring().unloading_branch(
+          x, x_max, unloading_stiffness(delta_max), r.force, slope);
+        r.stiffness = slope * dx;
       }
     const double pressure = -particle_pressure;
     r.force += p.pull_off_force + multicontact_factor * delta * pressure;

@@ -2,6 +2,7 @@
 
 #include "dem/contact/contact_law.h"
 #include "dem/contact/contact_law_registry.h"
+#include "dem/contact/hysteretic_spring.h"
 
 namespace compax::dem
 {
@@ -183,6 +184,13 @@ namespace compax::dem
     }
 
   private:
+    /// The branches in x = delta^{3/2}.
+    HystereticSpring
+    spring() const
+    {
+      return {k1, k2, kc};
+    }
+
     double     R;
     double     E;
     Parameters p;

@@ -14,10 +14,11 @@ namespace compax::dem
                                  const Parameters &parameters)
       : R(effective_radius)
       , p(parameters)
-      , k1(parameters.loading_stiffness)
-      , k2_max(parameters.unloading_stiffness_ratio
-               * parameters.loading_stiffness)
-      , kc(parameters.adhesion_stiffness_ratio * parameters.loading_stiffness)
+      , spring{parameters.loading_stiffness,
+               parameters.unloading_stiffness_ratio
+                 * parameters.loading_stiffness,
+               parameters.adhesion_stiffness_ratio
+                 * parameters.loading_stiffness}
   {
     if (!(parameters.loading_stiffness > 0.0))
       throw std::invalid_argument("walton-braun: k1 must be positive");
@@ -97,18 +98,14 @@ namespace compax::dem
   double
   WaltonBraunLaw::plastic_flow_limit() const
   {
-    if (k2_max == k1)
-      return std::numeric_limits<double>::infinity();
-    return k2_max / (k2_max - k1) * p.plasticity_depth * 2.0 * R;
+    return spring.plastic_flow_limit(p.plasticity_depth, R);
   }
 
   double
   WaltonBraunLaw::unloading_stiffness(const double delta_max) const
   {
-    const double limit = plastic_flow_limit();
-    if (k2_max == k1 || delta_max >= limit)
-      return k2_max;
-    return k1 + (k2_max - k1) * std::max(delta_max, 0.0) / limit;
+    return spring.unloading_stiffness(std::max(delta_max, 0.0),
+                                      plastic_flow_limit());
   }
 
   double
@@ -116,7 +113,7 @@ namespace compax::dem
   {
     if (delta_max <= 0.0)
       return 0.0;
-    return (1.0 - k1 / unloading_stiffness(delta_max)) * delta_max;
+    return (1.0 - spring.k1 / unloading_stiffness(delta_max)) * delta_max;
   }
 
   double
@@ -125,7 +122,7 @@ namespace compax::dem
     if (delta_max <= 0.0)
       return 0.0;
     const double k2 = unloading_stiffness(delta_max);
-    return (k2 - k1) / (k2 + kc) * delta_max;
+    return (k2 - spring.k1) / (k2 + spring.kc) * delta_max;
   }
 
   ContactResponse
@@ -137,20 +134,12 @@ namespace compax::dem
     r.contact_radius = std::sqrt(R * delta);
     if (delta >= delta_max)
       {
-        r.force     = k1 * delta;
-        r.stiffness = k1;
-      }
-    else if (delta > minimum_overlap(delta_max))
-      {
-        const double k2 = unloading_stiffness(delta_max);
-        r.force         = k2 * (delta - plastic_overlap(delta_max));
-        r.stiffness     = k2;
+        r.force     = spring.k1 * delta;
+        r.stiffness = spring.k1;
       }
     else
-      {
-        r.force     = -kc * delta;
-        r.stiffness = -kc;
-      }
+      spring.unloading_branch(
+        delta, delta_max, unloading_stiffness(delta_max), r.force, r.stiffness);
     return r;
   }
 

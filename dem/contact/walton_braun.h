@@ -2,6 +2,7 @@
 
 #include "dem/contact/contact_law.h"
 #include "dem/contact/contact_law_registry.h"
+#include "dem/contact/hysteretic_spring.h"
 
 namespace compax::dem
 {
@@ -114,10 +115,8 @@ namespace compax::dem
     }
 
   private:
-    double     R;
-    Parameters p;
-    double     k1;
-    double     k2_max;
-    double     kc;
+    double           R;
+    Parameters       p;
+    HystereticSpring spring;
   };
 } // namespace compax::dem

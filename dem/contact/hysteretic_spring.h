@@ -1,0 +1,69 @@
+#pragma once
+
+#include <limits>
+
+/**
+ * @file
+ * The branches of Luding's hysteretic spring (Luding 2008) in a loading
+ * variable x: x = delta for the Walton-Braun spring, x = delta^{3/2} for the
+ * multi-contact law of Giannis 2021. Both laws share them; what differs is
+ * x, k1 and the terms a law adds.
+ */
+
+namespace compax::dem
+{
+  /// Stiffnesses k1 (loading), k2_max (largest un/reloading) and kc
+  /// (adhesion) in units of force per unit of x, and the plastic flow
+  /// limit delta* = k2_max/(k2_max - k1) phi_F 2R [m].
+  struct HystereticSpring
+  {
+    double k1     = 0.0;
+    double k2_max = 0.0;
+    double kc     = 0.0;
+
+    /// delta* [m] for plasticity depth phi_F and effective radius R;
+    /// infinite when k2_max = k1.
+    double
+    plastic_flow_limit(const double phi_F, const double R) const
+    {
+      if (k2_max == k1)
+        return std::numeric_limits<double>::infinity();
+      return k2_max / (k2_max - k1) * phi_F * 2.0 * R;
+    }
+
+    /// k2(delta_max) = k1 + (k2_max - k1) min(1, delta_max / delta*).
+    double
+    unloading_stiffness(const double delta_max, const double limit) const
+    {
+      if (k2_max == k1)
+        return k1;
+      if (delta_max >= limit)
+        return k2_max;
+      return k1 + (k2_max - k1) * delta_max / limit;
+    }
+
+    /// Force F and dF/dx at x < x_max on the un/reloading branch
+    /// k2 (x - x_0), x_0 = (1 - k1/k2) x_max, or the adhesive one -kc x,
+    /// whichever is larger.
+    void
+    unloading_branch(const double x,
+                     const double x_max,
+                     const double k2,
+                     double      &force,
+                     double      &slope) const
+    {
+      const double x0     = (1.0 - k1 / k2) * x_max;
+      const double branch = k2 * (x - x0);
+      if (branch > -kc * x)
+        {
+          force = branch;
+          slope = k2;
+        }
+      else
+        {
+          force = -kc * x;
+          slope = -kc;
+        }
+    }
+  };
+} // namespace compax::dem
