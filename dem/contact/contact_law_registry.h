@@ -10,12 +10,6 @@
 
 namespace compax::dem
 {
-  /**
-   * A contact law as the command line offers it: its name, its parameters
-   * (declared by the law itself) and how to build it between two bodies.
-   * A law joins every command that reads the registry through one line of
-   * registered_contact_laws().
-   */
   /// The two bodies a law is built between: radii [m], Young's moduli [Pa]
   /// and Poisson's ratios [-]; for a wall the second body has
   /// compax::dem::rigid radius and modulus.
@@ -28,6 +22,12 @@ namespace compax::dem
   /// The context of a law at overlap gamma [m] (ContactContext).
   using ContactContextAt = std::function<ContactContext(double gamma)>;
 
+  /**
+   * A contact law as the command line offers it: its name, its parameters
+   * (declared by the law itself) and how to build it between two bodies.
+   * A law joins every command that reads the registry through one line of
+   * registered_contact_laws().
+   */
   struct RegisteredContactLaw
   {
     /// Value of the Law selection, e.g. "walton-braun".
