@@ -1,5 +1,8 @@
 #pragma once
 
+#include "dem/contact/contact_response.h"
+
+#include <algorithm>
 #include <limits>
 
 /**
@@ -66,4 +69,15 @@ namespace compax::dem
         }
     }
   };
+
+  /// The history after a converged state at overlap gamma [m]: the largest
+  /// overlap delta_max, the only internal variable of the hysteretic
+  /// spring, raised to gamma; a_p and a_B are left untouched.
+  inline ContactHistory
+  with_largest_overlap(const ContactHistory &history, const double gamma)
+  {
+    ContactHistory next = history;
+    next.delta_max      = std::max(history.delta_max, gamma);
+    return next;
+  }
 } // namespace compax::dem

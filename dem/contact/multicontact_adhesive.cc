@@ -216,8 +216,6 @@ namespace compax::dem
                                            const ContactHistory &history,
                                            const ContactContext &) const
   {
-    ContactHistory next = history;
-    next.delta_max      = std::max(history.delta_max, gamma);
-    return next;
+    return with_largest_overlap(history, gamma);
   }
 } // namespace compax::dem

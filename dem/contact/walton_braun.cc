@@ -156,8 +156,6 @@ namespace compax::dem
                                   const ContactHistory &history,
                                   const ContactContext &) const
   {
-    ContactHistory h = history;
-    h.delta_max      = std::max(h.delta_max, gamma);
-    return h;
+    return with_largest_overlap(history, gamma);
   }
 } // namespace compax::dem
