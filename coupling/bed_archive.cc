@@ -1,9 +1,40 @@
 #include "coupling/bed_archive.h"
 
+#include "dem/solver/history_update.h"
+
 #include <stdexcept>
 
 namespace compax::coupling
 {
+  namespace
+  {
+    /// Key (two columns), a_p, a_B, delta_max.
+    constexpr hsize_t history_columns = 5;
+
+    /// Columns of a saved history table: 5, or 4 in checkpoints written
+    /// before delta_max was kept (it is then 0).
+    std::size_t
+    columns_of(const Hdf5ArchiveReader &archive, const std::string &name)
+    {
+      const std::vector<hsize_t> shape = archive.array_shape(name);
+      const std::size_t          columns
+        = shape.size() == 2 ? shape[1] : history_columns;
+      if (columns != 4 && columns != history_columns)
+        throw std::runtime_error("checkpoint array '" + name + "' has "
+                                 + std::to_string(columns)
+                                 + " columns; expected 4 or 5");
+      return columns;
+    }
+
+    dem::ContactHistory
+    history_at(const std::vector<double> &row,
+               std::size_t                k,
+               std::size_t                columns)
+    {
+      return {row[k + 2], row[k + 3], columns == 5 ? row[k + 4] : 0.0};
+    }
+  } // namespace
+
   void
   save_bed(Hdf5ArchiveWriter &archive,
            const std::string &group,
@@ -26,24 +57,31 @@ namespace compax::coupling
                          bed.walls.die_present ? 1.0 : 0.0,
                          bed.contacts.skin()});
 
+    // Columns: the contact's key (i, j) or (i, wall), then a_p, a_B and
+    // delta_max, the internal variables of every particle law.
     std::vector<double> pairs, walls;
     for (const auto &c : bed.contacts.pairs)
-      if (c.history.a_p > 0 || c.history.a_B > 0)
+      if (dem::has_history(c.history))
         pairs.insert(pairs.end(),
-                     {double(c.i), double(c.j), c.history.a_p, c.history.a_B});
+                     {double(c.i),
+                      double(c.j),
+                      c.history.a_p,
+                      c.history.a_B,
+                      c.history.delta_max});
     for (const auto &c : bed.contacts.walls)
-      if (c.history.a_p > 0 || c.history.a_B > 0)
+      if (dem::has_history(c.history))
         walls.insert(walls.end(),
                      {double(c.i),
                       double(static_cast<int>(c.wall)),
                       c.history.a_p,
-                      c.history.a_B});
+                      c.history.a_B,
+                      c.history.delta_max});
     archive.write_array(group + "/pair_histories",
                         pairs,
-                        {pairs.size() / 4, 4});
+                        {pairs.size() / history_columns, history_columns});
     archive.write_array(group + "/wall_histories",
                         walls,
-                        {walls.size() / 4, 4});
+                        {walls.size() / history_columns, history_columns});
   }
 
   dem::Bed
@@ -87,19 +125,22 @@ namespace compax::coupling
                                     "range");
       return static_cast<std::uint32_t>(v);
     };
-    for (std::size_t k = 0; k + 3 < h.size(); k += 4)
+    const std::size_t hc = columns_of(archive, group + "/pair_histories");
+    for (std::size_t k = 0; k + hc <= h.size(); k += hc)
       {
         const auto i = index(h[k]);
         const auto j = index(h[k + 1]);
-        bed.contacts.pairs.push_back(
-          {i,
-           j,
-           model.pair_law(
-             p.materials[i], p.radii[i], p.materials[j], p.radii[j]),
-           dem::ContactHistory{h[k + 2], h[k + 3], 0.0}});
+        bed.contacts.pairs.push_back({i,
+                                      j,
+                                      model.pair_law(p.materials[i],
+                                                     p.radii[i],
+                                                     p.materials[j],
+                                                     p.radii[j]),
+                                      history_at(h, k, hc)});
       }
-    const auto w = archive.read_array(group + "/wall_histories");
-    for (std::size_t k = 0; k + 3 < w.size(); k += 4)
+    const auto        w  = archive.read_array(group + "/wall_histories");
+    const std::size_t wc = columns_of(archive, group + "/wall_histories");
+    for (std::size_t k = 0; k + wc <= w.size(); k += wc)
       {
         const auto i = index(w[k]);
         if (!(w[k + 1] >= 0 && w[k + 1] <= 2))
@@ -109,7 +150,7 @@ namespace compax::coupling
           {i,
            static_cast<dem::Wall>(static_cast<int>(w[k + 1])),
            model.wall_law(p.materials[i], p.radii[i]),
-           dem::ContactHistory{w[k + 2], w[k + 3], 0.0}});
+           history_at(w, k, wc)});
       }
     bed.contacts.rebuild(bed.particles, bed.walls, model);
     return bed;

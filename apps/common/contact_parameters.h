@@ -5,11 +5,15 @@
 // tolerances of the elastic laws.
 
 #include "apps/cli/parameters.h"
+#include "apps/common/registered_law_parameters.h"
+#include "dem/solver/contact_model.h"
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace compax::cli
 {
@@ -18,27 +22,40 @@ namespace compax::cli
   {
     std::string law;
     std::string formulation;
+    /// The registered law of that name, or nullptr (bonded-elastoplastic,
+    /// elastic).
+    const dem::RegisteredContactLaw *registered = nullptr;
+    /// Its parsed parameters.
+    dem::LawParameterValues values;
   };
 
-  /// Declares the subsection Contact: Contact law (bonded-elastoplastic or
-  /// elastic) and Formulation (hertz or nonlocal), with the command's
-  /// documentation of each.
+  /// Declares the subsection Contact: Contact law (bonded-elastoplastic,
+  /// elastic, or a registered law without context, solved by the bonded
+  /// law's particle solver) and Formulation (hertz or nonlocal), with the
+  /// command's documentation of each, and the registered laws'
+  /// subsections.
   inline void
   declare_contact_choice(dealii::ParameterHandler &prm,
                          const std::string        &law_documentation,
                          const std::string        &formulation_documentation)
   {
     prm.enter_subsection("Contact");
-    prm.declare_entry("Contact law",
-                      "bonded-elastoplastic",
-                      dealii::Patterns::Selection(
-                        "bonded-elastoplastic|elastic"),
-                      law_documentation);
+    prm.declare_entry(
+      "Contact law",
+      "bonded-elastoplastic",
+      dealii::Patterns::Selection("bonded-elastoplastic|elastic"
+                                  + registered_law_names(true)),
+      law_documentation
+        + " Registered laws, on the bonded law's particle solver with its "
+          "Young's modulus and Poisson's ratio of Material (the plastic and "
+          "Bonding entries are not used)"
+        + registered_law_documentation(true) + ".");
     prm.declare_entry("Formulation",
                       "hertz",
                       dealii::Patterns::Selection("hertz|nonlocal"),
                       formulation_documentation);
     prm.leave_subsection();
+    declare_registered_laws(prm, true);
   }
 
   /// Reads the subsection Contact; rejects the nonlocal formulation with a
@@ -59,7 +76,38 @@ namespace compax::cli
                      + law
                      + "; the bonded elasto-plastic law's plasticity and "
                        "solid bridges are outside it)");
-    return {law, formulation};
+    ContactChoice choice{law, formulation, dem::find_contact_law(law), {}};
+    if (choice.registered)
+      choice.values = get_registered_law_values(prm, *choice.registered);
+    return choice;
+  }
+
+  /// Every contact of @p model follows the chosen registered law, if one
+  /// was chosen.
+  inline void
+  apply_contact_choice(const ContactChoice &choice, dem::ContactModel &model)
+  {
+    if (!choice.registered)
+      return;
+    try
+      {
+        model.use_registered_law(*choice.registered, choice.values);
+      }
+    catch (const std::invalid_argument &e)
+      {
+        reject_entry("Contact/Contact law", choice.law, e.what());
+      }
+  }
+
+  /// The subsections that define a bed's contacts, for a checkpoint's
+  /// "same state?" test: @p fixed and every registered law's subsection.
+  inline std::vector<std::string>
+  with_registered_law_subsections(std::vector<std::string> fixed)
+  {
+    for (const dem::RegisteredContactLaw &law : dem::registered_contact_laws())
+      if (!law.parameters.empty() && !law.context)
+        fixed.push_back(law.subsection);
+    return fixed;
   }
 
   /// The Solver tolerances of the bonded law's equilibria carried over to

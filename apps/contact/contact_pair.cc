@@ -1,6 +1,7 @@
 #include "apps/contact/contact_pair.h"
 
 #include "apps/cli/parameters.h"
+#include "apps/common/registered_law_parameters.h"
 #include "dem/contact/bonded_elastoplastic.h"
 #include "dem/contact/contact_law_registry.h"
 #include "dem/contact/pair_properties.h"
@@ -102,14 +103,8 @@ namespace compax::cli
                          const Body                      &body1,
                          const Body                      &body2)
     {
-      dem::LawParameterValues values;
-      if (!law.parameters.empty())
-        {
-          prm.enter_subsection(law.subsection);
-          for (const dem::LawParameter &p : law.parameters)
-            values[p.name] = prm.get_double(p.name);
-          prm.leave_subsection();
-        }
+      const dem::LawParameterValues values
+        = get_registered_law_values(prm, law);
       const dem::ContactBodies bodies{body1.radius,
                                       body1.material.youngs_modulus,
                                       body1.material.poisson_ratio,
@@ -122,54 +117,6 @@ namespace compax::cli
         pair.context = law.context(values, bodies);
       return pair;
     }
-
-    /// Each registered law's subsection, as the law declares it.
-    void
-    declare_registered_laws(dealii::ParameterHandler &prm)
-    {
-      for (const dem::RegisteredContactLaw &law :
-           dem::registered_contact_laws())
-        {
-          if (law.parameters.empty())
-            continue;
-          prm.enter_subsection(law.subsection);
-          for (const dem::LawParameter &p : law.parameters)
-            declare_quantity(
-              prm,
-              p.name,
-              format_number(p.default_value),
-              RealInterval(p.lower, p.lower_open, p.upper, p.upper_open),
-              p.unit,
-              p.documentation);
-          prm.leave_subsection();
-        }
-    }
-
-    /// "bonded-elastoplastic|...": the built-in law, then the registered ones.
-    std::string
-    law_names()
-    {
-      std::string names = "bonded-elastoplastic";
-      for (const dem::RegisteredContactLaw &law :
-           dem::registered_contact_laws())
-        names += "|" + law.name;
-      return names;
-    }
-
-    /// The registered laws' part of the Law documentation.
-    std::string
-    registered_law_documentation()
-    {
-      std::string text;
-      for (const dem::RegisteredContactLaw &law :
-           dem::registered_contact_laws())
-        text += "; " + law.name + " (" + law.description
-                + (law.parameters.empty() ? std::string()
-                                          : "; subsection " + law.subsection)
-                + ")";
-      return text;
-    }
-
   } // namespace
 
   void
@@ -178,10 +125,11 @@ namespace compax::cli
   {
     prm.declare_entry("Law",
                       "bonded-elastoplastic",
-                      dealii::Patterns::Selection(law_names()),
+                      dealii::Patterns::Selection(
+                        "bonded-elastoplastic" + registered_law_names(false)),
                       "Contact law: bonded-elastoplastic (Gonzalez 2018, "
                       "Eqs. 3-5, 13; subsection Bonding)"
-                        + registered_law_documentation() + ".");
+                        + registered_law_documentation(false) + ".");
     prm.declare_entry("Geometry",
                       "sphere-wall",
                       dealii::Patterns::Selection("sphere-sphere|sphere-wall"),
@@ -231,7 +179,7 @@ namespace compax::cli
                      "Regularization parameter xi_B > 0 of Eq. (4) "
                      "(Gonzalez 2018 recommends 0.01, Sec. 3.2).");
     prm.leave_subsection();
-    declare_registered_laws(prm);
+    declare_registered_laws(prm, false);
   }
 
   ContactPair

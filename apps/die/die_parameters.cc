@@ -495,6 +495,7 @@ namespace compax::cli
         set_elastic_solver_tolerances(elastic, equilibrium);
         protocol.elastic = elastic;
       }
+    apply_contact_choice(contact, model);
 
     // A resumed run continues the checkpoint's compaction path: every entry
     // but those that only say where it stops, how often it checkpoints and
@@ -513,7 +514,9 @@ namespace compax::cli
                               "Protocol/Resume from",
                               "Solver/Maximum iterations"});
     const std::string state_parameters = canonical_parameters(
-      prm, {"Material", "Material 2", "Bonding", "Packing", "Contact"});
+      prm,
+      with_registered_law_subsections(
+        {"Material", "Material 2", "Bonding", "Packing", "Contact"}));
     return {model,
             {deposition, protocol, equilibrium, final_density, steps},
             rerun,

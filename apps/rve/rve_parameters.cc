@@ -733,6 +733,7 @@ namespace compax::cli
         e.force_floor_fraction = s.loading.force_floor_fraction;
         s.elastic              = e;
       }
+    apply_contact_choice(contact, s.model);
 
     if (s.cell_sizes.empty())
       check_cell_width("Packing/Number of particles",

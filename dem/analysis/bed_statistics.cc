@@ -13,7 +13,7 @@ namespace compax::dem
     for (const PairContact &c : bed.contacts.pairs)
       {
         const double P
-          = c.law.response(pair_overlap(p, c), c.history.a_p, c.history.a_B)
+          = law_response(c.law, pair_overlap(p, c), c.history)
               .force;
         if (P == 0.0)
           continue;

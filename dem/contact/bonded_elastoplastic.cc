@@ -177,4 +177,24 @@ namespace compax::dem
       next.a_B = 0.0;
     return next;
   }
+
+  double
+  BondedElastoplasticLaw::unloading_stiffness(const double          gamma,
+                                              const ContactHistory &history,
+                                              const ContactContext &) const
+  {
+    const ContactResponse r = response(gamma, history.a_p, history.a_B);
+    if (r.contact_radius > 0.0 && r.contact_radius >= history.a_p)
+      return 16.0 * k.effective_modulus * r.contact_radius / (3.0 * pi);
+    return r.stiffness;
+  }
+
+  bool
+  BondedElastoplasticLaw::loads_plastically(const double          gamma,
+                                            const ContactHistory &history,
+                                            const ContactContext &) const
+  {
+    return response(gamma, history.a_p, history.a_B).contact_radius
+           > history.a_p;
+  }
 } // namespace compax::dem

@@ -90,6 +90,19 @@ namespace compax::dem
                     const ContactHistory &history,
                     const ContactContext &context) const override;
 
+    /// 16 E a / (3 pi) where the contact loads plastically (a >= a_p > 0
+    /// or virgin), the law's stiffness elsewhere.
+    double
+    unloading_stiffness(double                gamma,
+                        const ContactHistory &history,
+                        const ContactContext &context) const override;
+
+    /// a(gamma) > a_p: Eq. (13) would grow the plastic radius.
+    bool
+    loads_plastically(double                gamma,
+                      const ContactHistory &history,
+                      const ContactContext &context) const override;
+
     std::string
     name() const override
     {

@@ -36,6 +36,38 @@ namespace compax::dem
                     const ContactHistory &history,
                     const ContactContext &context) const = 0;
 
+    /**
+     * Stiffness dP/dgamma [N/m] of the branch that a contact at overlap
+     * gamma would follow if it unloaded from there: the elastic moduli of
+     * a compacted bed. A law without plastic loading keeps its own
+     * stiffness (the default).
+     */
+    virtual double
+    unloading_stiffness(double                gamma,
+                        const ContactHistory &history,
+                        const ContactContext &context) const
+    {
+      return evaluate(gamma, history, context).stiffness;
+    }
+
+    /**
+     * Whether the state at overlap gamma loads the contact plastically, so
+     * that updated_history() would grow its internal variables (a_p of a
+     * bonded contact, delta_max of a hysteretic spring). Converged states
+     * whose force the solve does not resolve skip such growth
+     * (history_update.h). False for laws without history (the default).
+     */
+    virtual bool
+    loads_plastically(double                gamma,
+                      const ContactHistory &history,
+                      const ContactContext &context) const
+    {
+      (void)gamma;
+      (void)history;
+      (void)context;
+      return false;
+    }
+
     /// Short name used in parameter files and output ("hertz", ...).
     virtual std::string
     name() const = 0;

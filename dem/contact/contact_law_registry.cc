@@ -1,21 +1,24 @@
 #include "dem/contact/contact_law_registry.h"
 
-#include "dem/contact/hertz.h"
-#include "dem/contact/multicontact_adhesive.h"
-#include "dem/contact/nonlocal_hertz.h"
-#include "dem/contact/walton_braun.h"
+#include "dem/contact/registered_laws.h"
 
 namespace compax::dem
 {
+  namespace
+  {
+    template <typename... Laws>
+    std::vector<RegisteredContactLaw>
+    registrations(LawList<Laws...>)
+    {
+      return {Laws::registration()...};
+    }
+  } // namespace
+
   const std::vector<RegisteredContactLaw> &
   registered_contact_laws()
   {
-    static const std::vector<RegisteredContactLaw> laws = {
-      HertzLaw::registration(),
-      NonlocalHertzLaw::registration(),
-      MulticontactAdhesiveLaw::registration(),
-      WaltonBraunLaw::registration(),
-    };
+    static const std::vector<RegisteredContactLaw> laws
+      = registrations(RegisteredLaws{});
     return laws;
   }
 

@@ -25,8 +25,8 @@ namespace compax::dem
   /**
    * A contact law as the command line offers it: its name, its parameters
    * (declared by the law itself) and how to build it between two bodies.
-   * A law joins every command that reads the registry through one line of
-   * registered_contact_laws().
+   * A law joins every command that reads the registry through its entry in
+   * RegisteredLaws (registered_laws.h).
    */
   struct RegisteredContactLaw
   {

@@ -28,6 +28,9 @@ namespace compax::dem
              double E2,
              double nu2);
 
+    /// A local law: the particle solvers may hold it (particle_law.h).
+    static constexpr bool needs_context = false;
+
     /// The law's parameters and builder for the command line
     /// (contact_law_registry.h).
     static RegisteredContactLaw

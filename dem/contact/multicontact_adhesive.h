@@ -105,6 +105,10 @@ namespace compax::dem
              double            nu2,
              const Parameters &parameters);
 
+    /// Needs the particle pressure P_ij: the explicit DEM evaluates it,
+    /// not the static particle solvers.
+    static constexpr bool needs_context = true;
+
     /// The law's parameters and builder for the command line
     /// (contact_law_registry.h).
     static RegisteredContactLaw

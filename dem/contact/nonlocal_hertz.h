@@ -92,6 +92,10 @@ namespace compax::dem
              double E2,
              double nu2);
 
+    /// Needs the nonlocal overlap of the other contacts: the nonlocal
+    /// solvers (dem/nonlocal) evaluate it, not the local particle solvers.
+    static constexpr bool needs_context = true;
+
     /// The law's parameters and builder for the command line
     /// (contact_law_registry.h).
     static RegisteredContactLaw

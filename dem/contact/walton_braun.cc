@@ -158,4 +158,22 @@ namespace compax::dem
   {
     return with_largest_overlap(history, gamma);
   }
+
+  double
+  WaltonBraunLaw::unloading_stiffness(const double          gamma,
+                                      const ContactHistory &history,
+                                      const ContactContext &) const
+  {
+    if (gamma <= 0.0)
+      return 0.0;
+    return unloading_stiffness(std::max(gamma, history.delta_max));
+  }
+
+  bool
+  WaltonBraunLaw::loads_plastically(const double          gamma,
+                                    const ContactHistory &history,
+                                    const ContactContext &) const
+  {
+    return gamma > std::max(history.delta_max, 0.0);
+  }
 } // namespace compax::dem

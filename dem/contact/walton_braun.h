@@ -56,6 +56,9 @@ namespace compax::dem
     static WaltonBraunLaw
     for_pair(double R1, double R2, const Parameters &parameters);
 
+    /// A local law: the particle solvers may hold it (particle_law.h).
+    static constexpr bool needs_context = false;
+
     /// The law's parameters with their ranges and units, and its builder,
     /// for the command line (contact_law_registry.h).
     static RegisteredContactLaw
@@ -74,6 +77,19 @@ namespace compax::dem
     updated_history(double                gamma,
                     const ContactHistory &history,
                     const ContactContext &context) const override;
+
+    /// k2(max(gamma, delta_max)) where the contact touches: the branch it
+    /// unloads along.
+    double
+    unloading_stiffness(double                gamma,
+                        const ContactHistory &history,
+                        const ContactContext &context) const override;
+
+    /// Loading beyond the largest overlap, gamma > max(delta_max, 0).
+    bool
+    loads_plastically(double                gamma,
+                      const ContactHistory &history,
+                      const ContactContext &context) const override;
 
     std::string
     name() const override

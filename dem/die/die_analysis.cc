@@ -16,8 +16,7 @@ namespace compax::dem
     for (const PairContact &c : bed.contacts.pairs)
       {
         const double P
-          = c.law.response(pair_overlap(p, c), c.history.a_p, c.history.a_B)
-              .force;
+          = law_response(c.law, pair_overlap(p, c), c.history).force;
         if (std::abs(P) > resolution)
           ++loaded;
         m.n_tensile += P < 0.0;
@@ -41,11 +40,9 @@ namespace compax::dem
     std::vector<double> f;
     for (const PairContact &c : bed.contacts.pairs)
       {
-        const double P = c.law
-                           .response(pair_overlap(bed.particles, c),
-                                     c.history.a_p,
-                                     c.history.a_B)
-                           .force;
+        const double P
+          = law_response(c.law, pair_overlap(bed.particles, c), c.history)
+              .force;
         if (P != 0.0)
           f.push_back(P);
       }

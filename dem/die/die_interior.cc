@@ -63,7 +63,7 @@ namespace compax::dem
           continue;
         const double gamma = pair_overlap(p, c);
         const double P
-          = resolved(c.law.response(gamma, c.history.a_p, c.history.a_B).force,
+          = resolved(law_response(c.law, gamma, c.history).force,
                      resolution);
         if (P == 0.0)
           continue;
@@ -83,7 +83,7 @@ namespace compax::dem
           continue;
         const WallGap g = walls.gap(c.wall, p.positions[c.i], p.radii[c.i]);
         const double  P = resolved(
-          c.law.response(g.overlap, c.history.a_p, c.history.a_B).force,
+          law_response(c.law, g.overlap, c.history).force,
           resolution);
         if (P == 0.0)
           continue;

@@ -113,7 +113,7 @@ namespace compax::dem
         c.i,
         c.j,
         (p.positions[c.i] - p.positions[c.j]).normalized(),
-        c.law.response(pair_overlap(p, c), c.history.a_p, c.history.a_B).force,
+        law_response(c.law, pair_overlap(p, c), c.history).force,
         c.history);
     snapshot.write(file);
   }

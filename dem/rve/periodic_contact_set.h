@@ -1,6 +1,6 @@
 #pragma once
 
-#include "dem/contact/bonded_elastoplastic.h"
+#include "dem/contact/particle_law.h"
 #include "dem/particles/particle_system.h"
 #include "dem/periodic/periodic_cell.h"
 #include "dem/periodic/periodic_pairs.h"
@@ -19,11 +19,11 @@ namespace compax::dem
    */
   struct PeriodicContact
   {
-    std::uint32_t          i;
-    std::uint32_t          j;
-    LatticeImage           image;
-    BondedElastoplasticLaw law;
-    ContactHistory         history;
+    std::uint32_t  i;
+    std::uint32_t  j;
+    LatticeImage   image;
+    ParticleLaw    law;
+    ContactHistory history;
   };
 
   /// Branch vector d = x_i - (x_j + H n) of a periodic contact [m]; the

@@ -85,10 +85,12 @@ namespace compax::dem
     PeriodicAssembler assembler;
     FireRelaxation    fire;
     // Forces below that of an overlap of 1e-5 R count as touching.
-    const double R     = bed.particles.mean_radius();
-    const double floor = model.pair_law(spec.material, R, spec.material, R)
-                           .response(1e-5 * R, 0.0, 0.0)
-                           .force;
+    const double R = bed.particles.mean_radius();
+    const double floor
+      = law_response(model.pair_law(spec.material, R, spec.material, R),
+                     1e-5 * R,
+                     ContactHistory{})
+          .force;
     double rho = bed.relative_density();
     while (rho < spec.relative_density * (1.0 - 1e-12))
       {

@@ -2,6 +2,8 @@
 
 #include "dem/contact/pair_properties.h"
 
+#include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace compax::dem
@@ -32,12 +34,57 @@ namespace compax::dem
         throw std::invalid_argument("K_Ic table is not square");
   }
 
-  BondedElastoplasticLaw
+  void
+  ContactModel::use_registered_law(const RegisteredContactLaw &law,
+                                   LawParameterValues          values)
+  {
+    if (law.context)
+      throw std::invalid_argument(
+        "the contact law " + law.name
+        + " needs a context (a nonlocal overlap or a particle pressure) "
+          "that the particle solvers do not provide");
+    registered        = &law;
+    registered_values = std::move(values);
+    // Built once here so that a law this build cannot hold fails now.
+    const ElastoplasticMaterial &m = materials.front();
+    registered_law_between({1.0,
+                            m.youngs_modulus,
+                            m.poisson_ratio,
+                            1.0,
+                            m.youngs_modulus,
+                            m.poisson_ratio});
+  }
+
+  ParticleLaw
+  ContactModel::registered_law_between(const ContactBodies &bodies) const
+  {
+    const std::unique_ptr<ContactLaw> law
+      = registered->make(registered_values, bodies);
+    std::optional<ParticleLaw> held = as_particle_law(*law);
+    if (!held)
+      throw std::invalid_argument("the contact law " + registered->name
+                                  + " is not among the particle solvers' "
+                                    "laws (particle_law.h)");
+    return *held;
+  }
+
+  ParticleLaw
   ContactModel::pair_law(const unsigned int material_i,
                          const double       R_i,
                          const unsigned int material_j,
                          const double       R_j) const
   {
+    if (registered)
+      {
+        const ElastoplasticMaterial &a = materials[material_i];
+        const ElastoplasticMaterial &b = materials[material_j];
+        return registered_law_between({R_i,
+                                       a.youngs_modulus,
+                                       a.poisson_ratio,
+                                       R_j,
+                                       b.youngs_modulus,
+                                       b.poisson_ratio});
+      }
     return BondedElastoplasticLaw::for_pair(materials[material_i],
                                             R_i,
                                             materials[material_j],
@@ -47,10 +94,13 @@ namespace compax::dem
                                             regularized);
   }
 
-  BondedElastoplasticLaw
+  ParticleLaw
   ContactModel::wall_law(const unsigned int material_i, const double R_i) const
   {
     const ElastoplasticMaterial &m = materials[material_i];
+    if (registered)
+      return registered_law_between(
+        {R_i, m.youngs_modulus, m.poisson_ratio, rigid, rigid, 0.0});
     return BondedElastoplasticLaw::for_pair(
       m,
       R_i,

@@ -1,7 +1,8 @@
 #pragma once
 
-#include "dem/contact/bonded_elastoplastic.h"
+#include "dem/contact/contact_law_registry.h"
 #include "dem/contact/elastoplastic_material.h"
+#include "dem/contact/particle_law.h"
 
 #include <vector>
 
@@ -11,7 +12,9 @@ namespace compax::dem
    * Which law acts between two particles, or a particle and a rigid wall,
    * of a bed made of several materials: the bonded elasto-plastic law of
    * Gonzalez 2018 (Eq. 4) with a fracture toughness K_Ic per pair of
-   * materials. Solid bridges with the walls are off unless asked for.
+   * materials, or a registered law that needs no context
+   * (use_registered_law()). Solid bridges with the walls are off unless
+   * asked for.
    */
   class ContactModel
   {
@@ -55,7 +58,27 @@ namespace compax::dem
     /// xi_B [-].
     double regularization;
 
-    BondedElastoplasticLaw
+    /**
+     * Every contact follows the registered law @p law with the parsed
+     * @p values instead of the bonded law; the bodies' radii, Young's
+     * moduli and Poisson's ratios come from the materials. Throws
+     * std::invalid_argument if the law needs a context (a nonlocal
+     * overlap, a particle pressure) that the particle solvers do not
+     * provide.
+     */
+    void
+    use_registered_law(const RegisteredContactLaw &law,
+                       LawParameterValues          values);
+
+    /// The registered law every contact follows, or nullptr for the
+    /// bonded law.
+    const RegisteredContactLaw *
+    registered_law() const
+    {
+      return registered;
+    }
+
+    ParticleLaw
     pair_law(unsigned int material_i,
              double       R_i,
              unsigned int material_j,
@@ -63,11 +86,16 @@ namespace compax::dem
 
     /// Law of a particle against a rigid flat (punch or die wall; the die
     /// wall's curvature is neglected in the law, R_die >> R).
-    BondedElastoplasticLaw
+    ParticleLaw
     wall_law(unsigned int material_i, double R_i) const;
 
   private:
+    ParticleLaw
+    registered_law_between(const ContactBodies &bodies) const;
+
     std::vector<ElastoplasticMaterial> materials;
     std::vector<std::vector<double>>   toughness;
+    const RegisteredContactLaw        *registered = nullptr;
+    LawParameterValues                 registered_values;
   };
 } // namespace compax::dem

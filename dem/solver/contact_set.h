@@ -1,6 +1,6 @@
 #pragma once
 
-#include "dem/contact/bonded_elastoplastic.h"
+#include "dem/contact/particle_law.h"
 #include "dem/neighbors/cell_grid.h"
 #include "dem/particles/particle_system.h"
 #include "dem/solver/contact_model.h"
@@ -16,19 +16,19 @@ namespace compax::dem
   /// A potential contact of particles i < j with its law and history.
   struct PairContact
   {
-    std::uint32_t          i;
-    std::uint32_t          j;
-    BondedElastoplasticLaw law;
-    ContactHistory         history;
+    std::uint32_t  i;
+    std::uint32_t  j;
+    ParticleLaw    law;
+    ContactHistory history;
   };
 
   /// A potential contact of particle i with a rigid wall.
   struct WallContact
   {
-    std::uint32_t          i;
-    Wall                   wall;
-    BondedElastoplasticLaw law;
-    ContactHistory         history;
+    std::uint32_t  i;
+    Wall           wall;
+    ParticleLaw    law;
+    ContactHistory history;
   };
 
   /// Overlap gamma = R_i + R_j - |x_i - x_j| of a pair contact [m].

@@ -5,19 +5,16 @@
 namespace compax::dem
 {
   void
-  update_history(const BondedElastoplasticLaw &law,
-                 const double                  gamma,
-                 ContactHistory               &history,
-                 BondChanges                  &changes,
-                 const double                  resolution)
+  update_history(const ParticleLaw &law,
+                 const double       gamma,
+                 ContactHistory    &history,
+                 BondChanges       &changes,
+                 const double       resolution)
   {
-    if (resolution > 0.0)
-      {
-        const ContactResponse r = law.response(gamma, history.a_p, history.a_B);
-        if (r.contact_radius > history.a_p && std::abs(r.force) <= resolution)
-          return;
-      }
-    const ContactHistory next = law.updated_history(gamma, history);
+    if (resolution > 0.0 && loads_plastically(law, gamma, history)
+        && std::abs(law_response(law, gamma, history).force) <= resolution)
+      return;
+    const ContactHistory next = updated_history(law, gamma, history);
     if (history.a_B == 0.0 && next.a_B > 0.0)
       ++changes.formed;
     else if (history.a_B > 0.0 && next.a_B == 0.0)

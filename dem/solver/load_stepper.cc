@@ -77,49 +77,68 @@ namespace compax::dem
     return loose == 1;
   }
 
-  LoadStepper::UnjammedStep
-  LoadStepper::relax_unjammed(Bed &bed, LoadStepResult &total)
+  FireResult
+  LoadStepper::relax(Bed &bed, LoadStepResult &total)
   {
-    if (!(stepping.jamming_pressure > 0.0) || loose != 1)
-      return UnjammedStep::newton;
     // A balanced relaxation stops where Newton would: at the relative force
     // tolerance or below the absolute force floor.
     const bool lbfgs_minimiser
       = stepping.unjammed_equilibrium == UnjammedEquilibrium::balanced_lbfgs;
-    const bool balanced = lbfgs_minimiser
-                          || stepping.unjammed_equilibrium
-                               == UnjammedEquilibrium::balanced_relaxation;
     const EquilibriumOptions &eq = newton.options();
     const auto                t0 = std::chrono::steady_clock::now();
-    const FireResult          f  = lbfgs_minimiser
-                                     ? lbfgs.relax(bed,
-                                         model,
-                                         eq.force_tolerance,
-                                         stepping.balanced_iterations,
-                                         eq.force_floor)
-                                   : balanced ? fire.relax(bed,
-                                                 model,
-                                                 eq.force_tolerance,
-                                                 stepping.balanced_iterations,
-                                                 eq.force_floor)
-                                              : fire.relax(bed,
-                                                 model,
-                                                 stepping.unjammed_tolerance,
-                                                 stepping.unjammed_iterations,
-                                                 stepping.force_resolution);
+    const FireResult          f
+      = lbfgs_minimiser         ? lbfgs.relax(bed,
+                                      model,
+                                      eq.force_tolerance,
+                                      stepping.balanced_iterations,
+                                      eq.force_floor)
+        : balanced_relaxation() ? fire.relax(bed,
+                                             model,
+                                             eq.force_tolerance,
+                                             stepping.balanced_iterations,
+                                             eq.force_floor)
+                                : fire.relax(bed,
+                                             model,
+                                             stepping.unjammed_tolerance,
+                                             stepping.unjammed_iterations,
+                                             stepping.force_resolution);
     total.fire_seconds
       += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
            .count();
     total.fire_iterations += f.iterations;
     total.assemblies += f.assemblies;
-    if (!below_jamming(bed, f.sums))
-      return UnjammedStep::newton; // the bed jams in this sub-step
-    if (!f.converged)
-      return UnjammedStep::failed;
+    return f;
+  }
+
+  bool
+  LoadStepper::balanced_relaxation() const
+  {
+    return stepping.unjammed_equilibrium == UnjammedEquilibrium::balanced_lbfgs
+           || stepping.unjammed_equilibrium
+                == UnjammedEquilibrium::balanced_relaxation;
+  }
+
+  EquilibriumResult
+  LoadStepper::relaxed_result(const FireResult &f, LoadStepResult &total)
+  {
     total.last                   = EquilibriumResult{};
     total.last.converged         = true;
     total.last.relative_residual = f.relative_residual;
     total.last.sums              = f.sums;
+    return total.last;
+  }
+
+  LoadStepper::UnjammedStep
+  LoadStepper::relax_unjammed(Bed &bed, LoadStepResult &total)
+  {
+    if (!(stepping.jamming_pressure > 0.0) || loose != 1)
+      return UnjammedStep::newton;
+    const FireResult f = relax(bed, total);
+    if (!below_jamming(bed, f.sums))
+      return UnjammedStep::newton; // the bed jams in this sub-step
+    if (!f.converged)
+      return UnjammedStep::failed;
+    relaxed_result(f, total);
     return UnjammedStep::relaxed;
   }
 
@@ -154,9 +173,28 @@ namespace compax::dem
     total.bonds.formed += b.formed;
     total.bonds.broken += b.broken;
     // A bed that has jammed once stays a solid: its unloading and ejection
-    // are static equilibria solved by Newton, however small the punch load.
+    // are static equilibria solved by Newton, however small the punch load
+    // (relax_coming_apart() only takes over where Newton fails).
     if (loose != 0)
       loose = below_jamming(bed, sums) ? 1 : 0;
+  }
+
+  EquilibriumResult
+  LoadStepper::relax_coming_apart(Bed            &bed,
+                                  const DieWalls &next,
+                                  LoadStepResult &total)
+  {
+    if (!(stepping.jamming_pressure > 0.0) || loose != 0
+        || !balanced_relaxation() || !(next.height() > saved.walls.height()))
+      return EquilibriumResult{};
+    bed = saved;
+    predict(bed, next);
+    bed.walls          = next;
+    const FireResult f = relax(bed, total);
+    if (!f.converged)
+      return EquilibriumResult{};
+    total.relaxed = true;
+    return relaxed_result(f, total);
   }
 
   void
@@ -214,8 +252,18 @@ namespace compax::dem
         saved               = bed;
         const DieWalls next = t >= 1.0 ? target : interpolate(start, target, t);
         predict(bed, next);
-        bed.walls                 = next;
-        const EquilibriumResult r = solve_substep(bed, total);
+        bed.walls        = next;
+        const bool opens = next.height() > saved.walls.height();
+        coming_apart     = coming_apart && opens;
+        EquilibriumResult r;
+        if (!coming_apart)
+          r = solve_substep(bed, total);
+        if (!r.converged
+            && (coming_apart || 0.5 * fraction < stepping.min_fraction))
+          {
+            r            = relax_coming_apart(bed, next, total);
+            coming_apart = r.converged;
+          }
         if (r.converged)
           {
             last_increment

@@ -155,6 +155,20 @@ namespace compax::dem
       failed   ///< unjammed, but the relaxation did not converge: cut back
     };
 
+    /// The relaxation of the Unjammed equilibrium option at the current
+    /// walls, its time and iterations added to `total`.
+    FireResult
+    relax(Bed &bed, LoadStepResult &total);
+
+    /// Whether the relaxation balances to Newton's tolerances
+    /// (balanced-lbfgs, balanced-relaxation).
+    bool
+    balanced_relaxation() const;
+
+    /// `total.last` of a converged relaxation.
+    EquilibriumResult
+    relaxed_result(const FireResult &f, LoadStepResult &total);
+
     /// Relaxes an unjammed sub-step (see LoadSteppingOptions). A
     /// relaxation that does not converge while the bed stays unjammed
     /// fails the sub-step rather than handing Newton a bed without
@@ -167,6 +181,20 @@ namespace compax::dem
     /// relaxation, else Newton; not converged when either fails.
     EquilibriumResult
     solve_substep(Bed &bed, LoadStepResult &total);
+
+    /**
+     * The smallest sub-step to walls `next` from `saved` once more, by the
+     * balanced relaxation, after Newton failed on it: the last resort
+     * before the step fails, for a jammed bed whose punch gap opens (a
+     * compact without bridges coming apart on unloading, whose floppy
+     * modes Newton cannot balance). Converged only if the relaxation
+     * balances it to the tolerances of Newton (a balanced Unjammed
+     * equilibrium only); a run that converges without it is unchanged.
+     * Once it has balanced a sub-step, the following ones that open the
+     * gap further start with it (Newton would fail there again).
+     */
+    EquilibriumResult
+    relax_coming_apart(Bed &bed, const DieWalls &next, LoadStepResult &total);
 
     /// Eq. (13) on a converged sub-step; remembers whether it is unjammed.
     void
@@ -184,7 +212,10 @@ namespace compax::dem
     double              fraction = 1.0;
     /// Whether the bed is still unjammed; -1: not known yet.
     int loose = -1;
-    Bed saved;
+    /// Whether the last sub-step was relax_coming_apart()'s: the next ones
+    /// that open the punch gap further go to it without Newton.
+    bool coming_apart = false;
+    Bed  saved;
     // Secant predictor: the last converged sub-step's displacements and
     // wall increments (lower punch, upper punch, diameter).
     Eigen::VectorXd last_increment;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "dem/contact/bonded_elastoplastic.h"
+#include "dem/contact/particle_law.h"
 #include "dem/solver/block_sparse_matrix.h"
 #include "dem/solver/contact_model.h"
 #include "dem/solver/contact_sums.h"
@@ -45,10 +46,22 @@ namespace compax::dem
   double
   unloading_stiffness(const BondedElastoplasticLaw &law, double a);
 
+  /// Any particle law's response: the bonded law's inline path above,
+  /// another law's own evaluate() (a direct call: the laws are final).
+  inline ContactResponse
+  contact_response(const ParticleLaw    &law,
+                   const double          gamma,
+                   const ContactHistory &history)
+  {
+    if (const auto *bonded = std::get_if<BondedElastoplasticLaw>(&law))
+      return contact_response(*bonded, gamma, history);
+    return law_response(law, gamma, history);
+  }
+
   /// The response of a contact (a die's or a periodic cell's) at overlap
-  /// gamma on the given branch: the law's, with the elastic unloading
-  /// stiffness 16 E* a / (3 pi) where the contact is on the plastic branch
-  /// and `unloading` is asked.
+  /// gamma on the given branch: the law's, with the stiffness of elastic
+  /// unloading (ContactLaw::unloading_stiffness(); 16 E* a / (3 pi) of a
+  /// bonded contact on its plastic branch) where `unloading` is asked.
   template <typename Contact>
   inline ContactResponse
   contact_response(const Contact      &c,
@@ -56,9 +69,15 @@ namespace compax::dem
                    const ContactBranch branch)
   {
     ContactResponse r = contact_response(c.law, gamma, c.history);
-    if (branch == ContactBranch::unloading && r.contact_radius > 0.0
-        && r.contact_radius >= c.history.a_p)
-      r.stiffness = unloading_stiffness(c.law, r.contact_radius);
+    if (branch != ContactBranch::unloading)
+      return r;
+    if (const auto *bonded = std::get_if<BondedElastoplasticLaw>(&c.law))
+      {
+        if (r.contact_radius > 0.0 && r.contact_radius >= c.history.a_p)
+          r.stiffness = unloading_stiffness(*bonded, r.contact_radius);
+      }
+    else
+      r.stiffness = unloading_stiffness(c.law, gamma, c.history);
     return r;
   }
 

@@ -4,6 +4,7 @@
 #include "dem/particles/particle_system.h"
 #include "dem/solver/block_sparse_matrix.h"
 #include "dem/solver/contact_sums.h"
+#include "dem/solver/history_update.h"
 #include "dem/solver/pair_block.h"
 #include "dem/solver/pair_pattern.h"
 
@@ -80,7 +81,7 @@ namespace compax::dem
     const Eigen::Vector3d d     = branch_vector(bed, c);
     const double          dist  = d.norm();
     const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
-    if (c.history.a_p == 0.0
+    if (!has_history(c.history)
         && (gamma <= 0.0 || gamma < touch_tolerance * dist))
       return;
     const ContactResponse r = response(c, gamma);

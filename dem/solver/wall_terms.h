@@ -3,6 +3,7 @@
 #include "dem/solver/bed.h"
 #include "dem/solver/block_sparse_matrix.h"
 #include "dem/solver/contact_sums.h"
+#include "dem/solver/history_update.h"
 #include "dem/solver/pair_assembler.h"
 #include "dem/solver/pair_terms.h"
 
@@ -29,7 +30,7 @@ namespace compax::dem
     for (const WallContact &c : bed.contacts.walls)
       {
         const WallGap g = bed.walls.gap(c.wall, p.positions[c.i], p.radii[c.i]);
-        if (c.history.a_p == 0.0
+        if (!has_history(c.history)
             && (g.overlap <= 0.0 || g.overlap < touch_tolerance * p.radii[c.i]))
           continue;
         const ContactResponse r = contact_response(c.law, g.overlap, c.history);

@@ -169,3 +169,20 @@ TEST_F(DieCommand, BranchRerunFromItsCheckpointEqualsTheUninterruptedBranch)
                 1e-9 * std::abs(full.column.at(quantity)[1]))
       << quantity;
 }
+
+/// A registered law runs in `compax die` through Contact/Contact law alone
+/// (the Walton-Braun spring of the explicit-DEM peer): the punches balance
+/// at every converged state and no solid bridge forms (the law has none).
+TEST_F(DieCommand, WaltonBraunLawRunsThroughTheRegistry)
+{
+  write("wb.prm",
+        small_bed
+          + "subsection Contact\n  set Contact law = walton-braun\nend\n");
+  const auto r = compax("die wb.prm -o out");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const Csv die(folder / "out" / "die.csv");
+  ASSERT_GT(die.rows(), 20u);
+  expect_balanced_punches(die);
+  for (const double s : die.column.at("bonding_surface"))
+    EXPECT_EQ(s, 0.0);
+}

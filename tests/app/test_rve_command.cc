@@ -37,6 +37,23 @@ namespace
       " set Snapshot interval = 5\n"
       "end\n";
 
+  /// The condensed tangent equals central finite differences of the cell
+  /// (at trial states half a step along the path, histories frozen) at
+  /// every step that checked it, and some step did.
+  void
+  expect_tangent_equals_finite_differences(const Csv &moduli)
+  {
+    std::size_t checked = 0;
+    for (std::size_t i = 0; i < moduli.rows(); ++i)
+      if (!moduli.text.at("tangent_fd_error")[i].empty())
+        {
+          EXPECT_LT(moduli.column.at("tangent_fd_error")[i], 1e-4)
+            << "step " << moduli.column.at("step")[i];
+          ++checked;
+        }
+    EXPECT_GT(checked, 0u);
+  }
+
   bool
   has(const Csv &csv, const std::string &column)
   {
@@ -137,17 +154,7 @@ TEST_F(RveCommand, UniaxialPathFollowsMassConservationAndUnloads)
     EXPECT_LT(szz[i], 0.0) << "row " << i;
   EXPECT_GE(szz.back(), 0.0);
 
-  // The condensed tangent equals central finite differences of the cell
-  // (at trial states half a step along the path, histories frozen).
-  std::size_t checked = 0;
-  for (std::size_t i = 0; i < moduli.rows(); ++i)
-    if (!moduli.text.at("tangent_fd_error")[i].empty())
-      {
-        EXPECT_LT(moduli.column.at("tangent_fd_error")[i], 1e-4)
-          << "step " << moduli.column.at("step")[i];
-        ++checked;
-      }
-  EXPECT_GT(checked, 0u);
+  expect_tangent_equals_finite_differences(moduli);
 
   // Snapshots listed in the collection exist.
   const std::string pvd = read(folder / "out" / "snapshots.pvd");
@@ -322,4 +329,29 @@ TEST_F(RveCommand, MissingCheckpointIsRejected)
   write("bad.prm",
         "subsection Checkpoints\n set Resume from = nowhere.h5\nend\n");
   expect_rejected(compax("rve bad.prm -o out"), "Checkpoints/Resume from");
+}
+
+/// A registered law runs in `compax rve` through Contact/Contact law alone
+/// (the Walton-Braun spring): the path keeps its closed form
+/// (eps_zz = ln(rho_0/rho), mass conservation), the loaded cell is in
+/// compression, and the condensed tangent equals central differences.
+TEST_F(RveCommand, WaltonBraunLawRunsThroughTheRegistry)
+{
+  write("wb.prm",
+        small_uniaxial
+          + "subsection Contact\n  set Contact law = walton-braun\nend\n");
+  const auto r = compax("rve wb.prm -o out");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const Csv    rve(folder / "out" / "rve.csv");
+  const auto  &rho  = rve.column.at("relative_density");
+  const double rho0 = rho.front();
+  for (std::size_t i = 0; i < rve.rows(); ++i)
+    EXPECT_NEAR(rve.column.at("eps_zz")[i],
+                std::log(rho0 / rho[i]),
+                print_tolerance)
+      << "row " << i;
+  EXPECT_LT(rve.column.at("sigma_zz")[10], 0.0);
+  for (const double s : rve.column.at("bonding_surface"))
+    EXPECT_EQ(s, 0.0);
+  expect_tangent_equals_finite_differences(Csv(folder / "out" / "moduli.csv"));
 }

@@ -60,7 +60,8 @@ TEST(RveMaterialLattice, Fe2TabletOfSimpleCubicLatticeFollowsThePairLaw)
   auto material = std::make_shared<coupling::RveMaterial>(spec, model);
   fem::TabletSolver<2> solver(s, material, MPI_COMM_WORLD);
 
-  const dem::BondedElastoplasticLaw law = model.pair_law(0, R, 0, R);
+  const dem::BondedElastoplasticLaw law
+    = dem::bonded_law(model.pair_law(0, R, 0, R));
   // Histories of the axial and radial contacts, updated by Eq. (13) after
   // each converged step as the RVE does.
   dem::ContactHistory axial, radial;

@@ -41,7 +41,7 @@ TEST(BedStatistics, LoadedContactsOfAColumnFollowTheLaw)
   const Bed  bed     = column_of_three(model);
   const auto network = loaded_contacts(bed);
   ASSERT_EQ(network.forces.size(), 2u);
-  const auto   law = model.pair_law(0, R, 0, R);
+  const auto   law = bonded_law(model.pair_law(0, R, 0, R));
   const double P   = law.response(overlap, 0, 0).force;
   for (std::size_t c = 0; c < 2; ++c)
     {

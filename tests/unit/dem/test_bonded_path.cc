@@ -93,9 +93,9 @@ TEST(BondedPath, ChainStaysTogetherAndPullsOffAtTheLawsForce)
   // The weakest contact's pull-off, from the law at the committed state.
   double weakest = -1e300;
   for (const auto &c : bed.contacts.pairs)
-    weakest = std::max(weakest, pull_off(c.law, c.history));
+    weakest = std::max(weakest, pull_off(bonded_law(c.law), c.history));
   for (const auto &c : bed.contacts.walls)
-    weakest = std::max(weakest, pull_off(c.law, c.history));
+    weakest = std::max(weakest, pull_off(bonded_law(c.law), c.history));
   ASSERT_LT(weakest, 0.0);
 
   // Unloading: the punch withdraws in small steps; the chain follows in
@@ -121,7 +121,8 @@ TEST(BondedPath, ChainStaysTogetherAndPullsOffAtTheLawsForce)
                                       - bed.particles.positions[c.i])
                                        .norm();
               EXPECT_GT(c.history.a_B, 0.0);
-              EXPECT_GT(c.law.response(gamma, c.history.a_p, c.history.a_B)
+              EXPECT_GT(bonded_law(c.law)
+                          .response(gamma, c.history.a_p, c.history.a_B)
                           .contact_radius,
                         0.0);
             }
@@ -219,7 +220,7 @@ TEST(BondedPath, HypostaticTriangleStandsOnlyByItsBridge)
     {
       if (c.i + c.j != 1)
         continue;
-      EXPECT_LT(c.law
+      EXPECT_LT(bonded_law(c.law)
                   .response(2 * R
                               - (bonded.particles.positions[1]
                                  - bonded.particles.positions[0])

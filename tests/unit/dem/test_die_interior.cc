@@ -41,8 +41,9 @@ TEST(DieInterior, CubicLatticeGivesTheClosedForm)
   bed.contacts             = ContactSet(0.3 * R);
   bed.contacts.rebuild(bed.particles, bed.walls, model);
   ASSERT_FALSE(bed.contacts.pairs.empty());
-  const double P
-    = bed.contacts.pairs.front().law.response(gamma, 0.0, 0.0).force;
+  const double P = bonded_law(bed.contacts.pairs.front().law)
+                     .response(gamma, 0.0, 0.0)
+                     .force;
   ASSERT_GT(P, 0.0);
 
   const double           w = 4 * R;
@@ -111,7 +112,9 @@ TEST(DieInterior, WholeDieStressIsThePunchPressure)
                                         state.particles.positions[c.i],
                                         state.particles.radii[c.i]);
       offset += 0.5 * g.overlap
-                * c.law.response(g.overlap, c.history.a_p, c.history.a_B).force;
+                * bonded_law(c.law)
+                    .response(g.overlap, c.history.a_p, c.history.a_B)
+                    .force;
     }
   const double V = state.walls.enclosed_volume();
   const double z = std::max(std::abs(state.walls.lower_punch),

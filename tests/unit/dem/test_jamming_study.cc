@@ -83,8 +83,8 @@ TEST(JammingStudy, ZeroToughnessKeepsMaterialsAndRemovesBridges)
   // contact does not pull harder; in compression beyond gamma_p, where a
   // > a_p, both laws are the same plastic loading curve.
   const double R   = material1::R;
-  const auto   lb  = bonded.pair_law(0, R, 0, R);
-  const auto   lu  = unbonded.pair_law(0, R, 0, R);
+  const auto   lb  = bonded_law(bonded.pair_law(0, R, 0, R));
+  const auto   lu  = bonded_law(unbonded.pair_law(0, R, 0, R));
   const double a_p = R / 10, gamma_p = lb.plastic_overlap(a_p);
   const double gamma = 0.5 * (gamma_p + lb.breakage_overlap(a_p));
   EXPECT_LT(lb.response(gamma, a_p, a_p).force, 0.0);

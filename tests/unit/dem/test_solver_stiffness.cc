@@ -54,12 +54,12 @@ TEST(SolverStiffness, EqualsCentralDifferenceOfResidual)
           continue;
         }
       // gamma = gamma_p - 0.3 (gamma_p - gamma_break(a_p)), by fixed point.
-      double a_p = c.law.plastic_radius(gamma);
+      double a_p = bonded_law(c.law).plastic_radius(gamma);
       for (int it = 0; it < 50; ++it)
         {
-          const double drop
-            = c.law.plastic_overlap(a_p) - c.law.breakage_overlap(a_p);
-          a_p = c.law.plastic_radius(gamma + 0.3 * drop);
+          const double drop = bonded_law(c.law).plastic_overlap(a_p)
+                              - bonded_law(c.law).breakage_overlap(a_p);
+          a_p = bonded_law(c.law).plastic_radius(gamma + 0.3 * drop);
         }
       c.history.a_p = a_p;
       c.history.a_B = a_p;
