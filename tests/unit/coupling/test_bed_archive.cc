@@ -7,16 +7,44 @@
 #include "dem/solver/load_stepper.h"
 #include "tests/support/deposited_die.h"
 #include "tests/support/gonzalez_material1.h"
+#include "tests/support/walton_braun_model.h"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <unistd.h>
+#include <utility>
 
 using namespace compax;
 
 namespace
 {
+  /// A temporary HDF5 file name of this process.
+  std::string
+  temporary_archive()
+  {
+    return (std::filesystem::temp_directory_path()
+            / ("compax-bed-" + std::to_string(::getpid()) + ".h5"))
+      .string();
+  }
+
+  /// @p bed written to an archive and read back with @p model.
+  dem::Bed
+  restart(const dem::Bed &bed, const dem::ContactModel &model)
+  {
+    const std::string file = temporary_archive();
+    {
+      coupling::Hdf5ArchiveWriter writer(file, {"test", ""});
+      coupling::save_bed(writer, "state", bed);
+      writer.commit();
+    }
+    const coupling::Hdf5ArchiveReader reader(file);
+    dem::Bed restored = coupling::load_bed(reader, "state", model);
+    std::filesystem::remove(file);
+    return restored;
+  }
+
   dem::Bed
   compacted_bed(dem::LoadStepper &stepper)
   {
@@ -41,18 +69,7 @@ TEST(BedCheckpoint, RestartEqualsUninterruptedRun)
   dem::LoadStepper        stepper(model);
   dem::Bed                original = compacted_bed(stepper);
 
-  const std::string file
-    = (std::filesystem::temp_directory_path()
-       / ("compax-bed-" + std::to_string(::getpid()) + ".h5"))
-        .string();
-  {
-    coupling::Hdf5ArchiveWriter writer(file, {"test", ""});
-    coupling::save_bed(writer, "state", original);
-    writer.commit();
-  }
-  const coupling::Hdf5ArchiveReader reader(file);
-  dem::Bed restored = coupling::load_bed(reader, "state", model);
-  std::filesystem::remove(file);
+  dem::Bed restored = restart(original, model);
 
   ASSERT_EQ(restored.particles.size(), original.particles.size());
   for (std::size_t i = 0; i < original.particles.size(); ++i)
@@ -81,4 +98,34 @@ TEST(BedCheckpoint, RestartEqualsUninterruptedRun)
                - original.particles.positions[i])
                 .norm(),
               1e-9 * R);
+}
+
+/// The largest overlaps delta_max of a hysteretic law (Walton-Braun) are
+/// internal variables too: every contact of the restored bed has the
+/// history it was saved with, all three variables bit for bit.
+TEST(BedCheckpoint, LargestOverlapsOfAHystereticLawSurvive)
+{
+  const dem::ContactModel model = compax::testing::walton_braun_model();
+  dem::LoadStepper        stepper(model);
+  const dem::Bed          original = compacted_bed(stepper);
+  const dem::Bed          restored = restart(original, model);
+
+  std::map<std::pair<std::uint32_t, std::uint32_t>, dem::ContactHistory> saved;
+  for (const auto &c : original.contacts.pairs)
+    if (dem::has_history(c.history))
+      saved[{c.i, c.j}] = c.history;
+  ASSERT_GT(saved.size(), 10u);
+  std::size_t found = 0;
+  for (const auto &c : restored.contacts.pairs)
+    {
+      const auto s = saved.find({c.i, c.j});
+      if (s == saved.end())
+        {
+          EXPECT_FALSE(dem::has_history(c.history));
+          continue;
+        }
+      EXPECT_EQ(c.history, s->second);
+      ++found;
+    }
+  EXPECT_EQ(found, saved.size());
 }

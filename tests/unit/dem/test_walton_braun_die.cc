@@ -1,6 +1,6 @@
-#include "dem/contact/contact_law_registry.h"
 #include "dem/die/die_compaction.h"
 #include "dem/die/die_setup.h"
+#include "tests/support/walton_braun_model.h"
 
 #include <gtest/gtest.h>
 
@@ -13,23 +13,6 @@ using namespace compax::dem;
 
 namespace
 {
-  /// Material 1's elastic constants (Gonzalez 2018, Table 1) with the
-  /// registry's Walton-Braun law at its defaults, k2_max/k1 = @p ratio and
-  /// plasticity depth phi_F = @p depth.
-  ContactModel
-  walton_braun(const double ratio, const double depth = 0.573)
-  {
-    ContactModel model(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0}, 0.0);
-    const RegisteredContactLaw *law = find_contact_law("walton-braun");
-    LawParameterValues          values;
-    for (const LawParameter &p : law->parameters)
-      values[p.name] = p.default_value;
-    values["Unloading stiffness ratio"] = ratio;
-    values["Plasticity depth"]          = depth;
-    model.use_registered_law(*law, values);
-    return model;
-  }
-
   /// What a die run leaves: its records and its final bed.
   struct DieRun
   {
@@ -74,7 +57,7 @@ namespace
 /// die wall: F_u - F_l is bounded by N times the largest particle residual).
 TEST(WaltonBraunDie, EveryContactFollowsTheLawAndThePunchesBalance)
 {
-  const DieRun die = compacted(walton_braun(22.0));
+  const DieRun die = compacted(compax::testing::walton_braun_model(22.0));
   ASSERT_FALSE(die.bed.contacts.pairs.empty());
   for (const PairContact &c : die.bed.contacts.pairs)
     ASSERT_TRUE(std::holds_alternative<WaltonBraunLaw>(c.law));
@@ -101,10 +84,12 @@ TEST(WaltonBraunDie, EveryContactFollowsTheLawAndThePunchesBalance)
 /// ends below its committed largest overlap.
 TEST(WaltonBraunDie, ElasticRecoveryFollowsTheCommittedUnloadingStiffness)
 {
-  const DieRun stiff   = compacted(walton_braun(22.0, 0.0));
-  const DieRun elastic = compacted(walton_braun(1.0, 0.0));
-  const double eps_22  = elastic_recovery(stiff.records);
-  const double eps_1   = elastic_recovery(elastic.records);
+  const DieRun stiff
+    = compacted(compax::testing::walton_braun_model(22.0, 0.0));
+  const DieRun elastic
+    = compacted(compax::testing::walton_braun_model(1.0, 0.0));
+  const double eps_22 = elastic_recovery(stiff.records);
+  const double eps_1  = elastic_recovery(elastic.records);
   EXPECT_GT(eps_22, 0.0);
   EXPECT_LT(eps_22, 0.2 * eps_1) << "k2 = k1 recovers " << eps_1;
   for (const PairContact &c : stiff.bed.contacts.pairs)
