@@ -13,8 +13,7 @@ namespace compax::dem
     for (const PairContact &c : bed.contacts.pairs)
       {
         const double P
-          = law_response(c.law, pair_overlap(p, c), c.history)
-              .force;
+          = law_response(c.law, pair_overlap(p, c), c.history).force;
         if (P == 0.0)
           continue;
         network.normals.push_back(

@@ -63,8 +63,7 @@ namespace compax::dem
           continue;
         const double gamma = pair_overlap(p, c);
         const double P
-          = resolved(law_response(c.law, gamma, c.history).force,
-                     resolution);
+          = resolved(law_response(c.law, gamma, c.history).force, resolution);
         if (P == 0.0)
           continue;
         const Eigen::Vector3d d = p.positions[c.j] - p.positions[c.i];
@@ -82,9 +81,9 @@ namespace compax::dem
         if (!inside[c.i])
           continue;
         const WallGap g = walls.gap(c.wall, p.positions[c.i], p.radii[c.i]);
-        const double  P = resolved(
-          law_response(c.law, g.overlap, c.history).force,
-          resolution);
+        const double  P
+          = resolved(law_response(c.law, g.overlap, c.history).force,
+                     resolution);
         if (P == 0.0)
           continue;
         // The wall pushes the sphere along g.normal at x - (R - gamma/2) n.
