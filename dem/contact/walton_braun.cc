@@ -164,9 +164,12 @@ namespace compax::dem
                                       const ContactHistory &history,
                                       const ContactContext &) const
   {
-    if (gamma <= 0.0)
-      return 0.0;
-    return unloading_stiffness(std::max(gamma, history.delta_max));
+    // Loading beyond delta_max: the un/reloading branch that starts here.
+    // Already below it: the branch the contact is on (un/reloading,
+    // adhesive, or none).
+    if (gamma > 0.0 && gamma >= history.delta_max)
+      return unloading_stiffness(gamma);
+    return response(gamma, history.delta_max).stiffness;
   }
 
   bool

@@ -78,8 +78,8 @@ namespace compax::dem
                     const ContactHistory &history,
                     const ContactContext &context) const override;
 
-    /// k2(max(gamma, delta_max)) where the contact touches: the branch it
-    /// unloads along.
+    /// The branch the contact unloads along: k2(gamma) where it loads
+    /// (gamma >= delta_max), else the stiffness of its current branch.
     double
     unloading_stiffness(double                gamma,
                         const ContactHistory &history,

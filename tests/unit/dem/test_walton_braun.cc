@@ -133,6 +133,25 @@ TEST(WaltonBraun, ConvergedStatesRaiseTheLargestOverlapOnly)
   EXPECT_NEAR(law.evaluate(1e-5, h).force, 0.1, 1e-15);
 }
 
+/// The stiffness the particle solvers take for elastic unloading (the
+/// moduli of a compact) and the plastic-loading test of Eq. 13's force
+/// resolution, against the hand values: loaded to 1e-5 m (delta_max below
+/// it) the contact unloads along k2 = 2.6e4 N/m; already on the
+/// un/reloading branch it keeps k2, on the adhesive branch -kc = -5e3 N/m.
+TEST(WaltonBraun, UnloadsAlongTheBranchItWouldFollow)
+{
+  ContactHistory loading;
+  loading.delta_max = 5e-6;
+  EXPECT_NEAR(law.unloading_stiffness(1e-5, loading, {}), 2.6e4, 1e-9);
+  EXPECT_TRUE(law.loads_plastically(1e-5, loading, {}));
+  ContactHistory unloaded;
+  unloaded.delta_max = 1e-5;
+  EXPECT_NEAR(law.unloading_stiffness(8e-6, unloaded, {}), 2.6e4, 1e-9);
+  EXPECT_NEAR(law.unloading_stiffness(3e-6, unloaded, {}), -5e3, 1e-9);
+  EXPECT_FALSE(law.loads_plastically(8e-6, unloaded, {}));
+  EXPECT_FALSE(law.loads_plastically(1e-5, unloaded, {}));
+}
+
 TEST(WaltonBraun, RejectsParametersOutsideTheirRange)
 {
   WaltonBraunLaw::Parameters p = hand_parameters();
