@@ -4,7 +4,6 @@
 #include "dem/contact/registered_laws.h"
 
 #include <optional>
-#include <string>
 #include <type_traits>
 #include <variant>
 
@@ -96,13 +95,6 @@ namespace compax::dem
   bonded_law(const ParticleLaw &law)
   {
     return std::get<BondedElastoplasticLaw>(law);
-  }
-
-  /// The law's name ("bonded-elastoplastic", "walton-braun", ...).
-  inline std::string
-  law_name(const ParticleLaw &law)
-  {
-    return std::visit([](const auto &l) { return l.name(); }, law);
   }
 
   /// A copy of @p law if a particle solver can hold it, else nothing.
