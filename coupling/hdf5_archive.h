@@ -1,5 +1,7 @@
 #pragma once
 
+#include "io/content_hash.h"
+
 #include <hdf5.h>
 
 #include <cstddef>
@@ -73,19 +75,9 @@ namespace compax::coupling
   std::string
   describe_archive_kind(const std::string &kind);
 
-  /// FNV-1a 64-bit hash of @p size bytes, continuing from @p hash.
-  std::uint64_t
-  hash64(const void   *data,
-         std::size_t   size,
-         std::uint64_t hash = 0xcbf29ce484222325ull);
-
-  /// 16 lower-case hexadecimal digits.
-  std::string
-  to_hex(std::uint64_t value);
-
-  /// hash64 of a file's bytes in hex; empty if it cannot be read.
-  std::string
-  file_hash(const std::string &path);
+  using io::file_hash;
+  using io::hash64;
+  using io::to_hex;
 
   /// hash64 of canonical parameter text in hex (the fingerprint).
   std::string

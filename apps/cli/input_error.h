@@ -1,20 +1,10 @@
 #pragma once
 
-#include <stdexcept>
-#include <string>
+#include "input/input_error.h"
 
 namespace compax::cli
 {
-  /**
-   * Bad input from the user: an unknown or malformed parameter, a value out
-   * of range, a missing file. The program prints what() alone and exits
-   * with code 2, leaving no output folder behind.
-   */
-  class InputError : public std::runtime_error
-  {
-  public:
-    using std::runtime_error::runtime_error;
-  };
+  using input::InputError;
 
   /// The exit codes of `compax`, documented in `compax --help`.
   enum ExitCode : int
