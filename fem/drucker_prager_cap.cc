@@ -1,5 +1,8 @@
 #include "fem/drucker_prager_cap.h"
 
+#include "input/input_error.h"
+#include "input/parameter_file.h"
+
 #include <deal.II/base/tensor.h>
 
 #include <algorithm>
@@ -89,6 +92,36 @@ namespace compax::fem
       : data(std::move(table))
   {
     data.validate();
+  }
+
+  void
+  DruckerPragerCap::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.declare_entry("DPC table",
+                      "",
+                      dealii::Patterns::Anything(),
+                      "CSV file with the density-dependent Drucker-Prager "
+                      "Cap data, header relative_density,cohesion,"
+                      "friction_angle_deg,cap_eccentricity,cap_pressure,"
+                      "youngs_modulus,poisson_ratio (Pa, degrees); empty: "
+                      "the built-in microcrystalline cellulose table. "
+                      "Unit: file path.");
+  }
+
+  std::shared_ptr<const MaterialModel>
+  DruckerPragerCap::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    const std::string file = prm.get("DPC table");
+    try
+      {
+        return std::make_shared<DruckerPragerCap>(
+          file.empty() ? DpcTable::microcrystalline_cellulose()
+                       : DpcTable::read_csv(input::resolve_input_path(file)));
+      }
+    catch (const std::exception &e)
+      {
+        input::reject_entry("Material/DPC table", file, e.what());
+      }
   }
 
   void

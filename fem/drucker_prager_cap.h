@@ -3,6 +3,10 @@
 #include "fem/dpc_table.h"
 #include "fem/material_model.h"
 
+#include <deal.II/base/parameter_handler.h>
+
+#include <memory>
+
 namespace compax::fem
 {
   /**
@@ -35,6 +39,17 @@ namespace compax::fem
   {
   public:
     explicit DruckerPragerCap(DpcTable table);
+
+    /// Declares "DPC table" (a CSV file, empty: the built-in
+    /// microcrystalline cellulose) in the current subsection.
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /// The material of the table declare_parameters() names; a file that
+    /// cannot be read or is not a DPC table is an input::InputError
+    /// naming Material/DPC table.
+    static std::shared_ptr<const MaterialModel>
+    parse_parameters(dealii::ParameterHandler &prm);
 
     std::string
     name() const override

@@ -1,6 +1,8 @@
 #include "fem/linear_elastic_material.h"
 
 #include "fem/isotropic_elasticity.h"
+#include "input/parameter_declaration.h"
+#include "input/real_interval.h"
 
 namespace compax::fem
 {
@@ -9,6 +11,30 @@ namespace compax::fem
       : E(youngs_modulus)
       , C(isotropic_stiffness_tensor(youngs_modulus, poisson_ratio))
   {
+  }
+
+  void
+  LinearElasticMaterial::declare_parameters(dealii::ParameterHandler &prm)
+  {
+    input::declare_quantity(prm,
+                            "Young's modulus",
+                            "5e9",
+                            input::positive(),
+                            "Pa",
+                            "Young's modulus of the linear-elastic model.");
+    input::declare_quantity(prm,
+                            "Poisson's ratio",
+                            "0.3",
+                            input::open(-1.0, 0.5),
+                            "-",
+                            "Poisson's ratio of the linear-elastic model.");
+  }
+
+  std::shared_ptr<const MaterialModel>
+  LinearElasticMaterial::parse_parameters(dealii::ParameterHandler &prm)
+  {
+    return std::make_shared<LinearElasticMaterial>(
+      prm.get_double("Young's modulus"), prm.get_double("Poisson's ratio"));
   }
 
   void

@@ -2,6 +2,10 @@
 
 #include "fem/material_model.h"
 
+#include <deal.II/base/parameter_handler.h>
+
+#include <memory>
+
 namespace compax::fem
 {
   /**
@@ -15,6 +19,15 @@ namespace compax::fem
   public:
     /// @param youngs_modulus E [Pa] > 0; @param poisson_ratio nu in (-1, 1/2)
     LinearElasticMaterial(double youngs_modulus, double poisson_ratio);
+
+    /// Declares "Young's modulus" and "Poisson's ratio" in the current
+    /// subsection (the tablet's Material).
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /// The material of the entries declare_parameters() declared.
+    static std::shared_ptr<const MaterialModel>
+    parse_parameters(dealii::ParameterHandler &prm);
 
     std::string
     name() const override

@@ -11,6 +11,25 @@
 
 namespace compax::cli
 {
+  fem::MaterialRegistry
+  tablet_materials()
+  {
+    fem::MaterialRegistry materials = fem::closed_form_materials();
+    materials.add({"multiscale-database",
+                   "an RVE response database is built first (subsection "
+                   "Multiscale) and the Drucker-Prager Cap fitted to it "
+                   "drives the tablet",
+                   {},
+                   {}});
+    materials.add({"multiscale-fe2",
+                   "an RVE per quadrature point (subsection Multiscale; "
+                   "experimental: with small cells it does not yet get past "
+                   "the jamming transition)",
+                   {},
+                   {}});
+    return materials;
+  }
+
   void
   declare_multiscale_parameters(dealii::ParameterHandler &prm)
   {

@@ -2,6 +2,7 @@
 
 #include "coupling/rve_database_study.h"
 #include "fem/material_model.h"
+#include "fem/material_registry.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -13,6 +14,15 @@
 
 namespace compax::cli
 {
+  /**
+   * The materials of `compax tablet`'s Material/Model: the closed-form ones
+   * of fem, then multiscale-database and multiscale-fe2, whose parameters
+   * lie in the subsection Multiscale and which make_multiscale_material()
+   * builds at run time.
+   */
+  fem::MaterialRegistry
+  tablet_materials();
+
   /**
    * Declares the subsection Multiscale of `compax tablet`: the RVE
    * (Material, Bonding, Packing of its particles), the database paths, the
