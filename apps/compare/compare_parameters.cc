@@ -2,8 +2,8 @@
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
-#include "apps/common/material_parameters.h"
-#include "apps/rve/rve_parameters.h"
+#include "coupling/parameters/material_parameters.h"
+#include "coupling/parameters/rve_parameters.h"
 
 #include <cmath>
 #include <cstdlib>
@@ -106,10 +106,10 @@ namespace compax::cli
     prm.leave_subsection();
 
     prm.enter_subsection("Material");
-    declare_particle_material(prm, material_1);
+    coupling::declare_particle_material(prm, coupling::material_1);
     prm.leave_subsection();
 
-    declare_rve_bonding_parameters(prm);
+    coupling::declare_rve_bonding_parameters(prm);
 
     prm.enter_subsection("Die");
     declare_quantity(prm,

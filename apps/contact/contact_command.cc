@@ -3,9 +3,9 @@
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
 #include "apps/common/gnuplot.h"
-#include "apps/common/material_parameters.h"
 #include "apps/contact/contact_pair.h"
 #include "apps/contact/overlap_path.h"
+#include "coupling/parameters/material_parameters.h"
 #include "io/csv_writer.h"
 
 #include <algorithm>
@@ -18,7 +18,12 @@ namespace compax::cli
   namespace
   {
     /// The Du et al. (2008) sphere of Gonzalez 2018, Sec. 3.3.
-    constexpr ParticleDefaults du_sphere{1.3e-6, 233e9, 0.3, 12.1e9, 1.79, 0};
+    constexpr coupling::ParticleDefaults du_sphere{1.3e-6,
+                                                   233e9,
+                                                   0.3,
+                                                   12.1e9,
+                                                   1.79,
+                                                   0};
 
     /// Extremes of a force history, as printed at the end of a run.
     struct ForceSummary

@@ -1,7 +1,7 @@
 #include "apps/contact/contact_pair.h"
 
 #include "apps/cli/parameters.h"
-#include "apps/common/registered_law_parameters.h"
+#include "coupling/parameters/registered_law_parameters.h"
 #include "dem/contact/bonded_elastoplastic.h"
 #include "dem/contact/contact_law_registry.h"
 #include "dem/contact/pair_properties.h"
@@ -24,9 +24,9 @@ namespace compax::cli
     read_body(dealii::ParameterHandler &prm, const std::string &subsection)
     {
       prm.enter_subsection(subsection);
-      Body body{get_particle_material(prm),
-                get_particle_radius(prm),
-                get_surface_energy(prm)};
+      Body body{coupling::get_particle_material(prm),
+                coupling::get_particle_radius(prm),
+                coupling::get_surface_energy(prm)};
       prm.leave_subsection();
       return body;
     }
@@ -104,7 +104,7 @@ namespace compax::cli
                          const Body                      &body2)
     {
       const dem::LawParameterValues values
-        = get_registered_law_values(prm, law);
+        = coupling::get_registered_law_values(prm, law);
       const dem::ContactBodies bodies{body1.radius,
                                       body1.material.youngs_modulus,
                                       body1.material.poisson_ratio,
@@ -120,16 +120,17 @@ namespace compax::cli
   } // namespace
 
   void
-  declare_contact_pair(dealii::ParameterHandler &prm,
-                       const ParticleDefaults   &defaults)
+  declare_contact_pair(dealii::ParameterHandler         &prm,
+                       const coupling::ParticleDefaults &defaults)
   {
     prm.declare_entry("Law",
                       "bonded-elastoplastic",
                       dealii::Patterns::Selection(
-                        "bonded-elastoplastic" + registered_law_names(false)),
+                        "bonded-elastoplastic"
+                        + coupling::registered_law_names(false)),
                       "Contact law: bonded-elastoplastic (Gonzalez 2018, "
                       "Eqs. 3-5, 13; subsection Bonding)"
-                        + registered_law_documentation(false) + ".");
+                        + coupling::registered_law_documentation(false) + ".");
     prm.declare_entry("Geometry",
                       "sphere-wall",
                       dealii::Patterns::Selection("sphere-sphere|sphere-wall"),
@@ -139,7 +140,7 @@ namespace compax::cli
     for (const char *name : {"Particle 1", "Particle 2"})
       {
         prm.enter_subsection(name);
-        declare_particle_material(prm, defaults);
+        coupling::declare_particle_material(prm, defaults);
         prm.leave_subsection();
       }
     prm.enter_subsection("Bonding");
@@ -179,7 +180,7 @@ namespace compax::cli
                      "Regularization parameter xi_B > 0 of Eq. (4) "
                      "(Gonzalez 2018 recommends 0.01, Sec. 3.2).");
     prm.leave_subsection();
-    declare_registered_laws(prm, false);
+    coupling::declare_registered_laws(prm, false);
   }
 
   ContactPair

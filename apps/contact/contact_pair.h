@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apps/common/material_parameters.h"
+#include "coupling/parameters/material_parameters.h"
 #include "dem/contact/contact_law.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -35,8 +35,8 @@ namespace compax::cli
   /// Declares Law, Geometry and the subsections Particle 1, Particle 2 and
   /// Bonding (and the law-specific ones).
   void
-  declare_contact_pair(dealii::ParameterHandler &prm,
-                       const ParticleDefaults   &defaults);
+  declare_contact_pair(dealii::ParameterHandler         &prm,
+                       const coupling::ParticleDefaults &defaults);
 
   /// Builds the pair; throws InputError for inconsistent entries.
   ContactPair

@@ -3,8 +3,8 @@
 #include "apps/cli/archive_entry.h"
 #include "apps/cli/input_error.h"
 #include "apps/database/database_outputs.h"
-#include "apps/database/database_parameters.h"
-#include "apps/rve/rve_parameters.h"
+#include "coupling/parameters/database_parameters.h"
+#include "coupling/parameters/rve_parameters.h"
 #include "coupling/rve_database_archive.h"
 #include "coupling/rve_database_study.h"
 
@@ -22,9 +22,9 @@ namespace compax::cli
     /// input naming the entry) and checks it against Stop after branches
     /// (the run and --check alike).
     std::optional<coupling::DatabaseResume>
-    prepare_resume(const DatabaseRunOptions &options,
-                   const std::string        &fingerprint,
-                   const dem::ContactModel  &model)
+    prepare_resume(const coupling::DatabaseRunOptions &options,
+                   const std::string                  &fingerprint,
+                   const dem::ContactModel            &model)
     {
       if (options.resume_from.empty())
         return std::nullopt;
@@ -128,28 +128,32 @@ namespace compax::cli
       void
       declare_parameters(dealii::ParameterHandler &prm) const override
       {
-        declare_database_parameters(prm);
-        declare_database_run_options(prm);
+        coupling::declare_database_parameters(prm);
+        coupling::declare_database_run_options(prm);
       }
 
       void
       check_parameters(dealii::ParameterHandler &prm) const override
       {
-        const DatabaseSetup      setup   = get_database_setup(prm);
-        const DatabaseRunOptions options = get_database_run_options(prm);
-        prepare_resume(options, database_fingerprint(prm), setup.cell.model);
+        const coupling::DatabaseSetup setup = coupling::get_database_setup(prm);
+        const coupling::DatabaseRunOptions options
+          = coupling::get_database_run_options(prm);
+        prepare_resume(options,
+                       coupling::database_fingerprint(prm),
+                       setup.cell.model);
         // The held-out packing is drawn with the next seed.
-        check_deposit_density(setup.spec.packing,
-                              options.held_out_packing ? 2 : 1);
+        coupling::check_deposit_density(setup.spec.packing,
+                                        options.held_out_packing ? 2 : 1);
       }
 
       int
       run(dealii::ParameterHandler    &prm,
           const std::filesystem::path &folder) const override
       {
-        const DatabaseSetup      setup       = get_database_setup(prm);
-        const DatabaseRunOptions options     = get_database_run_options(prm);
-        const std::string        fingerprint = database_fingerprint(prm);
+        const coupling::DatabaseSetup setup = coupling::get_database_setup(prm);
+        const coupling::DatabaseRunOptions options
+          = coupling::get_database_run_options(prm);
+        const std::string fingerprint = coupling::database_fingerprint(prm);
         const std::optional<coupling::DatabaseResume> resume
           = prepare_resume(options, fingerprint, setup.cell.model);
         std::cout << "compax database: " << setup.spec.packing.particle_count

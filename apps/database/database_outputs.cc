@@ -1,7 +1,7 @@
 #include "apps/database/database_outputs.h"
 
 #include "apps/common/gnuplot.h"
-#include "apps/common/voigt_columns.h"
+#include "coupling/parameters/voigt_columns.h"
 #include "dem/rve/homogenization.h"
 #include "io/csv_writer.h"
 
@@ -16,7 +16,7 @@ namespace compax::cli
                                      "relative_density",
                                      "shear_strain"};
     for (const char *tensor : {"eps", "sigma"})
-      for (std::string &column : voigt_columns(tensor))
+      for (std::string &column : coupling::voigt_columns(tensor))
         columns.push_back(std::move(column));
     columns.insert(columns.end(), {"p", "q"});
     io::CsvWriter csv(folder / "database.csv", std::move(columns));

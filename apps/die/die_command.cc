@@ -5,10 +5,10 @@
 #include "apps/cli/parameters.h"
 #include "apps/die/branch_states.h"
 #include "apps/die/die_outputs.h"
-#include "apps/die/die_parameters.h"
 #include "apps/die/kill_switch.h"
 #include "coupling/die_checkpoint.h"
 #include "coupling/die_state_archive.h"
+#include "coupling/parameters/die_parameters.h"
 #include "dem/die/die_study.h"
 #include "dem/wall_clock.h"
 
@@ -25,7 +25,7 @@ namespace compax::cli
   {
     /// The bed saved in checkpoints/branch-<k>.h5, and k.
     coupling::DieBranchState
-    load_branch_checkpoint(const DieInput &input)
+    load_branch_checkpoint(const coupling::DieInput &input)
     {
       return read_archive_entry("Protocol/Rerun branch from",
                                 input.rerun_branch_from,
@@ -69,7 +69,7 @@ namespace compax::cli
      * the run and --check do alike.
      */
     PreparedStudy
-    prepare_study(const DieInput &input)
+    prepare_study(const coupling::DieInput &input)
     {
       if (!input.rerun_branch_from.empty() && input.resume_from.empty())
         {
@@ -110,13 +110,13 @@ namespace compax::cli
       const auto old_folder
         = std::filesystem::absolute(file).parent_path().parent_path();
       std::vector<dem::DieRecord> rows = progress.rows;
-      dem::DieStudy     study          = naming_final_density(input.study, [&] {
+      dem::DieStudy study = coupling::naming_final_density(input.study, [&] {
         return dem::DieStudy(input.model,
                              input.study,
                              dem::DieStudyStart::resume(bed,
                                                         std::move(progress)));
       });
-      const std::string mismatch       = study.resume_mismatch();
+      const std::string mismatch = study.resume_mismatch();
       if (!mismatch.empty())
         reject_entry(entry, file, mismatch);
       try
@@ -137,7 +137,7 @@ namespace compax::cli
     /// last_converged.h5: the state a failed run stopped at, and why.
     void
     write_last_converged(const std::filesystem::path &folder,
-                         const DieInput              &input,
+                         const coupling::DieInput    &input,
                          const dem::DieStudyResult   &result)
     {
       coupling::write_die_state((folder / "last_converged.h5").string(),
@@ -231,13 +231,13 @@ namespace compax::cli
       void
       declare_parameters(dealii::ParameterHandler &prm) const override
       {
-        declare_die_parameters(prm);
+        coupling::declare_die_parameters(prm);
       }
 
       void
       check_parameters(dealii::ParameterHandler &prm) const override
       {
-        prepare_study(get_die_input(prm));
+        prepare_study(coupling::get_die_input(prm));
       }
 
       int
@@ -252,9 +252,9 @@ namespace compax::cli
   DieRun
   run_die(dealii::ParameterHandler &prm, const std::filesystem::path &folder)
   {
-    const DieInput input    = get_die_input(prm);
-    const auto     started  = std::chrono::steady_clock::now();
-    PreparedStudy  prepared = prepare_study(input);
+    const coupling::DieInput input    = coupling::get_die_input(prm);
+    const auto               started  = std::chrono::steady_clock::now();
+    PreparedStudy            prepared = prepare_study(input);
     if (!prepared.origin.empty())
       std::cout << prepared.origin << std::endl;
 
@@ -298,7 +298,7 @@ namespace compax::cli
                                          branch_states.so_far());
         };
     DieRun run;
-    run.result                        = naming_final_density(input.study, [&] {
+    run.result = coupling::naming_final_density(input.study, [&] {
       return prepared.study.run(observer);
     });
     const dem::DieStudyResult &result = run.result;

@@ -2,7 +2,7 @@
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
-#include "apps/die/die_parameters.h"
+#include "coupling/parameters/die_parameters.h"
 #include "dem/die/die_setup.h"
 #include "dem/die/jamming_study.h"
 
@@ -22,7 +22,7 @@ namespace compax::cli
     };
 
     JammingStudyInput
-    read_jamming(dealii::ParameterHandler &prm, const DieInput &die)
+    read_jamming(dealii::ParameterHandler &prm, const coupling::DieInput &die)
     {
       JammingStudyInput in;
       prm.enter_subsection("Jamming");
@@ -115,7 +115,7 @@ namespace compax::cli
       void
       declare_parameters(dealii::ParameterHandler &prm) const override
       {
-        declare_die_parameters(prm);
+        coupling::declare_die_parameters(prm);
         prm.enter_subsection("Jamming");
         prm.declare_entry("Material label",
                           "material1",
@@ -138,20 +138,20 @@ namespace compax::cli
       void
       check_parameters(dealii::ParameterHandler &prm) const override
       {
-        read_jamming(prm, get_die_input(prm));
+        read_jamming(prm, coupling::get_die_input(prm));
       }
 
       int
       run(dealii::ParameterHandler    &prm,
           const std::filesystem::path &folder) const override
       {
-        DieInput                die   = get_die_input(prm);
+        coupling::DieInput      die   = coupling::get_die_input(prm);
         dem::DieStudyOptions   &study = die.study;
         const JammingStudyInput input = read_jamming(prm, die);
         std::cout << "Packing " << study.deposition.n_particles
                   << " particles by ballistic deposition ..." << std::endl;
         const dem::Bed deposit = dem::fill_die(study.deposition);
-        set_compaction_targets(study, deposit.relative_density());
+        coupling::set_compaction_targets(study, deposit.relative_density());
 
         std::vector<dem::JammingResult> results;
         bool                            failed = false;

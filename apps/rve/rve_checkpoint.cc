@@ -37,7 +37,7 @@ namespace compax::cli
 
   void
   write_rve_checkpoint(const std::filesystem::path &file,
-                       const RveStudy              &study,
+                       const coupling::RveStudy    &study,
                        const dem::PeriodicBed      &bed,
                        const RveProgress           &p)
   {
@@ -72,9 +72,9 @@ namespace compax::cli
   }
 
   RveProgress
-  read_rve_checkpoint(const std::string &file,
-                      const RveStudy    &study,
-                      dem::PeriodicBed  &bed)
+  read_rve_checkpoint(const std::string        &file,
+                      const coupling::RveStudy &study,
+                      dem::PeriodicBed         &bed)
   {
     const std::string entry = "Checkpoints/Resume from";
     RveProgress       p;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apps/rve/rve_parameters.h"
+#include "coupling/parameters/rve_parameters.h"
 #include "dem/rve/periodic_bed.h"
 #include "dem/rve/rve_path_study.h"
 
@@ -32,7 +32,7 @@ namespace compax::cli
   /// Writes a checkpoint (cell and progress) atomically.
   void
   write_rve_checkpoint(const std::filesystem::path &file,
-                       const RveStudy              &study,
+                       const coupling::RveStudy    &study,
                        const dem::PeriodicBed      &bed,
                        const RveProgress           &progress);
 
@@ -40,9 +40,9 @@ namespace compax::cli
   /// it; throws InputError naming Checkpoints/Resume from if it is not an
   /// intact RVE checkpoint written with the study's resume_parameters.
   RveProgress
-  read_rve_checkpoint(const std::string &file,
-                      const RveStudy    &study,
-                      dem::PeriodicBed  &bed);
+  read_rve_checkpoint(const std::string        &file,
+                      const coupling::RveStudy &study,
+                      dem::PeriodicBed         &bed);
 
   /// The state of the path study that a checkpoint's progress and cell
   /// stand for (the counts of steps, the sticky jamming, the last state).

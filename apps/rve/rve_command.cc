@@ -2,9 +2,9 @@
 
 #include "apps/cli/parameters.h"
 #include "apps/rve/rve_pack.h"
-#include "apps/rve/rve_parameters.h"
 #include "apps/rve/rve_run.h"
 #include "apps/rve/rve_size_run.h"
+#include "coupling/parameters/rve_parameters.h"
 #include "dem/rve/rve_size_study.h"
 
 #include <iostream>
@@ -76,26 +76,26 @@ namespace compax::cli
       void
       declare_parameters(dealii::ParameterHandler &prm) const override
       {
-        declare_rve_parameters(prm);
+        coupling::declare_rve_parameters(prm);
       }
 
       void
       check_parameters(dealii::ParameterHandler &prm) const override
       {
-        const RveStudy study = get_rve_study(prm);
+        const coupling::RveStudy study = coupling::get_rve_study(prm);
         if (!study.resume_from.empty())
           {
             dem::PeriodicBed bed;
             read_rve_checkpoint(study.resume_from, study, bed);
           }
         else if (study.cell_sizes.empty())
-          check_deposit_density(study.packing);
+          coupling::check_deposit_density(study.packing);
         else
           {
             const dem::RveSizeStudy sizes(
               study.model, {study.packing, study.cell_sizes, {}});
             for (std::size_t k = 0; k < study.cell_sizes.size(); ++k)
-              check_deposit_density(sizes.packing(k));
+              coupling::check_deposit_density(sizes.packing(k));
           }
       }
 
@@ -103,7 +103,7 @@ namespace compax::cli
       run(dealii::ParameterHandler    &prm,
           const std::filesystem::path &folder) const override
       {
-        const RveStudy study = get_rve_study(prm);
+        const coupling::RveStudy study = coupling::get_rve_study(prm);
         if (study.elastic)
           std::cout << "Elastic frictionless spheres, "
                     << (study.elastic->nonlocal

@@ -7,7 +7,8 @@
 namespace compax::cli
 {
   void
-  print_packing(const RveStudy &study, const dem::PeriodicPackingSpec &spec)
+  print_packing(const coupling::RveStudy       &study,
+                const dem::PeriodicPackingSpec &spec)
   {
     const bool deposited = spec.protocol == dem::PackingProtocol::deposited;
     std::cout << "Packing " << spec.particle_count
@@ -20,7 +21,7 @@ namespace compax::cli
   }
 
   void
-  print_packed(const RveStudy                 &study,
+  print_packed(const coupling::RveStudy       &study,
                const dem::PeriodicPackingSpec &spec,
                const dem::PeriodicBed         &bed)
   {
@@ -37,7 +38,8 @@ namespace compax::cli
   }
 
   dem::PeriodicBed
-  pack_rve(const RveStudy &study, const dem::PeriodicPackingSpec &spec)
+  pack_rve(const coupling::RveStudy       &study,
+           const dem::PeriodicPackingSpec &spec)
   {
     print_packing(study, spec);
     dem::PeriodicBed bed;
@@ -49,7 +51,7 @@ namespace compax::cli
       }
     catch (const dem::DepositDensityError &e)
       {
-        reject_deposit_density(spec, e.deposit_density);
+        coupling::reject_deposit_density(spec, e.deposit_density);
       }
     print_packed(study, spec, bed);
     return bed;

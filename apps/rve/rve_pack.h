@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apps/rve/rve_parameters.h"
+#include "coupling/parameters/rve_parameters.h"
 #include "dem/rve/periodic_bed.h"
 #include "dem/rve/periodic_packing.h"
 
@@ -8,16 +8,18 @@ namespace compax::cli
 {
   /// The line on screen before a cell of `spec` is packed.
   void
-  print_packing(const RveStudy &study, const dem::PeriodicPackingSpec &spec);
+  print_packing(const coupling::RveStudy       &study,
+                const dem::PeriodicPackingSpec &spec);
 
   /// The lines on screen once it is packed.
   void
-  print_packed(const RveStudy                 &study,
+  print_packed(const coupling::RveStudy       &study,
                const dem::PeriodicPackingSpec &spec,
                const dem::PeriodicBed         &bed);
 
   /// The packing of one run, with its lines on screen; a deposit denser
-  /// than asked is bad input (reject_deposit_density()).
+  /// than asked is bad input (coupling::reject_deposit_density()).
   dem::PeriodicBed
-  pack_rve(const RveStudy &study, const dem::PeriodicPackingSpec &spec);
+  pack_rve(const coupling::RveStudy       &study,
+           const dem::PeriodicPackingSpec &spec);
 } // namespace compax::cli

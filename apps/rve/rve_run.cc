@@ -78,9 +78,9 @@ namespace compax::cli
     }
   } // namespace
 
-  RvePathOutput::RvePathOutput(const RveStudy       &study,
-                               std::filesystem::path folder,
-                               const RveProgress    *resumed)
+  RvePathOutput::RvePathOutput(const coupling::RveStudy &study,
+                               std::filesystem::path     folder,
+                               const RveProgress        *resumed)
       : study(study)
       , folder(std::move(folder))
       , started(Clock::now())
@@ -202,7 +202,7 @@ namespace compax::cli
      */
     std::optional<dem::CoordinationFit>
     write_jamming_fit(const std::filesystem::path &file,
-                      const RveStudy              &study,
+                      const coupling::RveStudy    &study,
                       const RveProgress           &p)
     {
       std::vector<dem::CompactionState> states;
@@ -286,7 +286,7 @@ namespace compax::cli
   }
 
   RveOutcome
-  run_rve_path(const RveStudy              &study,
+  run_rve_path(const coupling::RveStudy    &study,
                dem::PeriodicBed             bed,
                const std::filesystem::path &folder,
                const RveProgress           *resumed)

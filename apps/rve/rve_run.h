@@ -1,7 +1,7 @@
 #pragma once
 
 #include "apps/rve/rve_checkpoint.h"
-#include "apps/rve/rve_parameters.h"
+#include "coupling/parameters/rve_parameters.h"
 #include "dem/rve/periodic_bed.h"
 #include "dem/rve/rve_path_study.h"
 
@@ -32,9 +32,9 @@ namespace compax::cli
   public:
     /// `resumed`, if given, is the progress read from a checkpoint: its
     /// rows come first, its snapshots are taken over.
-    RvePathOutput(const RveStudy       &study,
-                  std::filesystem::path folder,
-                  const RveProgress    *resumed = nullptr);
+    RvePathOutput(const coupling::RveStudy &study,
+                  std::filesystem::path     folder,
+                  const RveProgress        *resumed = nullptr);
 
     dem::RvePathObserver
     observer();
@@ -57,7 +57,7 @@ namespace compax::cli
     void
     report(const dem::RvePathStepEvent &e) const;
 
-    const RveStudy                       &study;
+    const coupling::RveStudy             &study;
     std::filesystem::path                 folder;
     RveProgress                           earlier;
     std::vector<int>                      snapshots;
@@ -70,7 +70,7 @@ namespace compax::cli
    * given, is the progress read from a checkpoint together with `bed`.
    */
   RveOutcome
-  run_rve_path(const RveStudy              &study,
+  run_rve_path(const coupling::RveStudy    &study,
                dem::PeriodicBed             bed,
                const std::filesystem::path &folder,
                const RveProgress           *resumed = nullptr);

@@ -15,16 +15,17 @@
 namespace compax::cli
 {
   int
-  run_rve_size_study(const RveStudy &study, const std::filesystem::path &folder)
+  run_rve_size_study(const coupling::RveStudy    &study,
+                     const std::filesystem::path &folder)
   {
     const dem::RveSizeStudy sizes(study.model,
                                   {study.packing, study.cell_sizes, study});
     io::CsvWriter timing(folder / "timing.csv", {"particle_count", "seconds"});
     int           code = success;
-    dem::PeriodicPackingSpec     spec;
-    std::optional<RveStudy>      one;
-    std::optional<RvePathOutput> output;
-    dem::RveSizeObserver         observer;
+    dem::PeriodicPackingSpec          spec;
+    std::optional<coupling::RveStudy> one;
+    std::optional<RvePathOutput>      output;
+    dem::RveSizeObserver              observer;
     observer.packing = [&](std::size_t k, const dem::PeriodicPackingSpec &s) {
       spec = s;
       std::cout << "=== Cell size " << k + 1 << " of "
@@ -58,7 +59,7 @@ namespace compax::cli
       }
     catch (const dem::DepositDensityError &e)
       {
-        reject_deposit_density(spec, e.deposit_density);
+        coupling::reject_deposit_density(spec, e.deposit_density);
       }
 
     const auto              &quantities = dem::rve_size_quantities();

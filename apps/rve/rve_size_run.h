@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apps/rve/rve_parameters.h"
+#include "coupling/parameters/rve_parameters.h"
 
 #include <filesystem>
 
@@ -14,6 +14,6 @@ namespace compax::cli
    * between the sizes) and timing.csv. Returns an ExitCode.
    */
   int
-  run_rve_size_study(const RveStudy              &study,
+  run_rve_size_study(const coupling::RveStudy    &study,
                      const std::filesystem::path &folder);
 } // namespace compax::cli

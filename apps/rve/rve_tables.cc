@@ -1,6 +1,6 @@
 #include "apps/rve/rve_tables.h"
 
-#include "apps/common/voigt_columns.h"
+#include "coupling/parameters/voigt_columns.h"
 #include "io/csv_writer.h"
 
 #include <algorithm>
@@ -30,7 +30,7 @@ namespace compax::cli
     static const std::vector<std::string> names = [] {
       std::vector<std::string> n{"step", "stage", "relative_density"};
       for (const char *tensor : {"eps", "sigma"})
-        for (std::string &column : voigt_columns(tensor))
+        for (std::string &column : coupling::voigt_columns(tensor))
           n.push_back(std::move(column));
       n.insert(n.end(),
                {"mean_pressure",

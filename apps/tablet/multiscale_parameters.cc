@@ -2,8 +2,8 @@
 
 #include "apps/cli/parameters.h"
 #include "apps/database/database_outputs.h"
-#include "apps/database/database_parameters.h"
 #include "coupling/multiscale_database_material.h"
+#include "coupling/parameters/database_parameters.h"
 #include "coupling/rve_database_archive.h"
 #include "coupling/rve_material.h"
 
@@ -34,7 +34,7 @@ namespace compax::cli
   declare_multiscale_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Multiscale");
-    declare_database_parameters(prm);
+    coupling::declare_database_parameters(prm);
     prm.declare_entry("Pool size",
                       "4",
                       dealii::Patterns::Integer(1, 1000),
@@ -88,7 +88,7 @@ namespace compax::cli
   check_multiscale_parameters(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Multiscale");
-    get_database_setup(prm, "Multiscale/");
+    coupling::get_database_setup(prm, "Multiscale/");
     prm.leave_subsection();
   }
 
@@ -105,7 +105,8 @@ namespace compax::cli
     // What the database and the RVE states depend on.
     const std::string parameters = canonical_parameters(prm, {"Multiscale"});
     prm.enter_subsection("Multiscale");
-    DatabaseSetup setup = get_database_setup(prm, "Multiscale/");
+    coupling::DatabaseSetup setup
+      = coupling::get_database_setup(prm, "Multiscale/");
     // The tablet's fill density may lie below a deposit's: the RVEs then
     // start from the deposit (see Packing/Protocol).
     setup.spec.denser_deposit = dem::DenserDeposit::keep;

@@ -1,6 +1,6 @@
-#include "apps/common/voigt_columns.h"
+#include "coupling/parameters/voigt_columns.h"
 
-namespace compax::cli
+namespace compax::coupling
 {
   std::vector<std::string>
   voigt_columns(const std::string &tensor)
@@ -10,4 +10,4 @@ namespace compax::cli
       columns.push_back(tensor + "_" + component);
     return columns;
   }
-} // namespace compax::cli
+} // namespace compax::coupling

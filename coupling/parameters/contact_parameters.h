@@ -4,9 +4,9 @@
 // contact law and the formulation, read and cross-checked, and the solver
 // tolerances of the elastic laws.
 
-#include "apps/cli/parameters.h"
-#include "apps/common/registered_law_parameters.h"
+#include "coupling/parameters/registered_law_parameters.h"
 #include "dem/solver/contact_model.h"
+#include "input/input_error.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-namespace compax::cli
+namespace compax::coupling
 {
   /// Contact/Contact law and Contact/Formulation.
   struct ContactChoice
@@ -68,14 +68,15 @@ namespace compax::cli
     const std::string formulation = prm.get("Formulation");
     prm.leave_subsection();
     if (formulation == "nonlocal" && law != "elastic")
-      reject_entry("Contact/Formulation",
-                   formulation,
-                   "the nonlocal formulation (Gonzalez & Cuitino 2012) is "
-                   "for elastic frictionless spheres; it needs Contact/"
-                   "Contact law = elastic (here: "
-                     + law
-                     + "; the bonded elasto-plastic law's plasticity and "
-                       "solid bridges are outside it)");
+      input::reject_entry(
+        "Contact/Formulation",
+        formulation,
+        "the nonlocal formulation (Gonzalez & Cuitino 2012) is "
+        "for elastic frictionless spheres; it needs Contact/"
+        "Contact law = elastic (here: "
+          + law
+          + "; the bonded elasto-plastic law's plasticity and "
+            "solid bridges are outside it)");
     ContactChoice choice{law, formulation, dem::find_contact_law(law), {}};
     if (choice.registered)
       choice.values = get_registered_law_values(prm, *choice.registered);
@@ -95,7 +96,7 @@ namespace compax::cli
       }
     catch (const std::invalid_argument &e)
       {
-        reject_entry("Contact/Contact law", choice.law, e.what());
+        input::reject_entry("Contact/Contact law", choice.law, e.what());
       }
   }
 
@@ -123,4 +124,4 @@ namespace compax::cli
     options.solver.max_iterations
       = std::max(options.solver.max_iterations, equilibrium.max_iterations);
   }
-} // namespace compax::cli
+} // namespace compax::coupling

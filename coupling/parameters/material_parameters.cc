@@ -1,11 +1,26 @@
-#include "apps/common/material_parameters.h"
+#include "coupling/parameters/material_parameters.h"
 
-#include "apps/cli/parameters.h"
+#include "input/input_error.h"
+#include "input/parameter_declaration.h"
+#include "input/parameter_file.h"
+#include "input/real_interval.h"
 
 #include <sstream>
 
-namespace compax::cli
+namespace compax::coupling
 {
+  using input::closed;
+  using input::declare_quantity;
+  using input::format_number;
+  using input::get_real_list;
+  using input::InputError;
+  using input::non_negative;
+  using input::open;
+  using input::positive;
+  using input::RealInterval;
+  using input::reject_entry;
+  using input::resolve_input_path;
+
   void
   declare_particle_material(dealii::ParameterHandler &prm,
                             const ParticleDefaults   &defaults)
@@ -74,4 +89,4 @@ namespace compax::cli
   {
     return prm.get_double("Surface energy");
   }
-} // namespace compax::cli
+} // namespace compax::coupling

@@ -1,18 +1,35 @@
-#include "apps/die/die_parameters.h"
+#include "coupling/parameters/die_parameters.h"
 
-#include "apps/cli/parameters.h"
-#include "apps/common/contact_parameters.h"
-#include "apps/common/equilibrium_parameters.h"
-#include "apps/common/material_parameters.h"
+#include "coupling/parameters/contact_parameters.h"
+#include "coupling/parameters/equilibrium_parameters.h"
+#include "coupling/parameters/material_parameters.h"
 #include "dem/die/die_setup.h"
+#include "input/canonical_parameters.h"
+#include "input/input_error.h"
+#include "input/parameter_declaration.h"
+#include "input/parameter_file.h"
+#include "input/real_interval.h"
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 
-namespace compax::cli
+namespace compax::coupling
 {
+  using input::canonical_parameters;
+  using input::closed;
+  using input::declare_quantity;
+  using input::format_number;
+  using input::get_real_list;
+  using input::InputError;
+  using input::non_negative;
+  using input::open;
+  using input::positive;
+  using input::RealInterval;
+  using input::reject_entry;
+  using input::resolve_input_path;
+
   namespace
   {
     /// Material 2 of Gonzalez 2018, Table 1 (R = 220 um).
@@ -544,4 +561,4 @@ namespace compax::cli
                                          study.compaction_steps);
     });
   }
-} // namespace compax::cli
+} // namespace compax::coupling

@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace compax::cli
+namespace compax::coupling
 {
   /// Declares, in the current subsection, the convergence entries of the
   /// particle equilibrium solver: Force tolerance, Step tolerance, Maximum
@@ -20,4 +20,4 @@ namespace compax::cli
   void
   get_equilibrium_tolerances(dealii::ParameterHandler &prm,
                              dem::EquilibriumOptions  &options);
-} // namespace compax::cli
+} // namespace compax::coupling

@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-namespace compax::cli
+namespace compax::coupling
 {
   /// The macroscopic strain paths of `compax rve` (Path = csv is
   /// RvePath::increments).
@@ -132,4 +132,4 @@ namespace compax::cli
    */
   std::vector<Eigen::Matrix3d>
   read_strain_increments(const std::string &file, const std::string &entry);
-} // namespace compax::cli
+} // namespace compax::coupling

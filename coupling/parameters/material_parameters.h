@@ -4,7 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-namespace compax::cli
+namespace compax::coupling
 {
   /// Default values of a particle species, SI units.
   struct ParticleDefaults
@@ -41,4 +41,4 @@ namespace compax::cli
   /// subsection.
   double
   get_surface_energy(dealii::ParameterHandler &prm);
-} // namespace compax::cli
+} // namespace compax::coupling

@@ -1,13 +1,16 @@
-#include "apps/rve/rve_parameters.h"
+#include "coupling/parameters/rve_parameters.h"
 
-#include "apps/cli/input_error.h"
-#include "apps/cli/parameters.h"
-#include "apps/common/contact_parameters.h"
-#include "apps/common/equilibrium_parameters.h"
-#include "apps/common/material_parameters.h"
-#include "apps/common/voigt_columns.h"
+#include "coupling/parameters/contact_parameters.h"
+#include "coupling/parameters/equilibrium_parameters.h"
+#include "coupling/parameters/material_parameters.h"
+#include "coupling/parameters/voigt_columns.h"
 #include "dem/periodic/size_distribution_fit.h"
 #include "dem/rve/rve_packing.h"
+#include "input/canonical_parameters.h"
+#include "input/input_error.h"
+#include "input/parameter_declaration.h"
+#include "input/parameter_file.h"
+#include "input/real_interval.h"
 #include "io/csv_table.h"
 
 #include <algorithm>
@@ -17,8 +20,22 @@
 #include <map>
 #include <sstream>
 
-namespace compax::cli
+namespace compax::coupling
 {
+  using input::closed;
+  using input::declare_quantity;
+  using input::format_number;
+  using input::get_real_list;
+  using input::InputError;
+  using input::non_negative;
+  using input::open;
+  using input::positive;
+  using input::RealInterval;
+  using input::reject_entry;
+  using input::resolve_input_path;
+
+  using input::canonical_parameters;
+
   namespace
   {
     constexpr double pi = 3.14159265358979323846;
@@ -170,7 +187,7 @@ namespace compax::cli
                               const std::string        &protocol)
   {
     prm.enter_subsection("Material");
-    declare_particle_material(prm, material_1);
+    coupling::declare_particle_material(prm, coupling::material_1);
     prm.leave_subsection();
 
     declare_rve_bonding_parameters(prm);
@@ -292,7 +309,7 @@ namespace compax::cli
                                 const std::string        &consolidation)
   {
     prm.enter_subsection("Solver");
-    declare_equilibrium_tolerances(prm);
+    coupling::declare_equilibrium_tolerances(prm);
     declare_quantity(prm,
                      "Jamming pressure",
                      "0.5e6",
@@ -482,7 +499,7 @@ namespace compax::cli
 
     declare_rve_solver_parameters(prm);
 
-    declare_contact_choice(
+    coupling::declare_contact_choice(
       prm,
       "bonded-elastoplastic: the bonded elasto-plastic law of Gonzalez 2018 "
       "(Eq. 4) with the Material and Bonding entries; elastic: elastic "
@@ -502,9 +519,10 @@ namespace compax::cli
   get_rve_cell(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    const dem::ElastoplasticMaterial material = get_particle_material(prm);
-    const double                     omega    = get_surface_energy(prm);
-    const double                     radius   = get_particle_radius(prm);
+    const dem::ElastoplasticMaterial material
+      = coupling::get_particle_material(prm);
+    const double omega  = coupling::get_surface_energy(prm);
+    const double radius = coupling::get_particle_radius(prm);
     prm.leave_subsection();
 
     prm.enter_subsection("Bonding");
@@ -629,7 +647,7 @@ namespace compax::cli
   {
     dem::RveLoadingOptions o;
     prm.enter_subsection("Solver");
-    get_equilibrium_tolerances(prm, o.equilibrium);
+    coupling::get_equilibrium_tolerances(prm, o.equilibrium);
     o.jamming_pressure = prm.get_double("Jamming pressure");
     o.consolidation    = prm.get("Consolidation") == "frozen-history"
                            ? dem::RveConsolidation::frozen_history
@@ -719,21 +737,21 @@ namespace compax::cli
 
     s.loading = get_rve_loading_options(prm);
 
-    const ContactChoice contact = get_contact_choice(prm);
+    const coupling::ContactChoice contact = coupling::get_contact_choice(prm);
     if (contact.law == "elastic")
       {
         dem::NonlocalRveOptions e;
         const auto             &m = s.model.material(0);
         e.materials               = {{m.youngs_modulus, m.poisson_ratio}};
         e.nonlocal                = contact.formulation == "nonlocal";
-        set_elastic_solver_tolerances(e, s.loading.equilibrium);
+        coupling::set_elastic_solver_tolerances(e, s.loading.equilibrium);
         e.jamming_pressure     = s.loading.jamming_pressure;
         e.fire_iterations      = s.loading.fire_iterations;
         e.fire_tolerance       = s.loading.fire_tolerance;
         e.force_floor_fraction = s.loading.force_floor_fraction;
         s.elastic              = e;
       }
-    apply_contact_choice(contact, s.model);
+    coupling::apply_contact_choice(contact, s.model);
 
     if (s.cell_sizes.empty())
       check_cell_width("Packing/Number of particles",
@@ -744,4 +762,4 @@ namespace compax::cli
         check_cell_width("Size study/Cell sizes", n, s);
     return s;
   }
-} // namespace compax::cli
+} // namespace compax::coupling

@@ -1,10 +1,27 @@
-#include "apps/database/database_parameters.h"
+#include "coupling/parameters/database_parameters.h"
 
-#include "apps/cli/input_error.h"
-#include "apps/cli/parameters.h"
+#include "input/canonical_parameters.h"
+#include "input/input_error.h"
+#include "input/parameter_declaration.h"
+#include "input/parameter_file.h"
+#include "input/real_interval.h"
 
-namespace compax::cli
+namespace compax::coupling
 {
+  using input::closed;
+  using input::declare_quantity;
+  using input::format_number;
+  using input::get_real_list;
+  using input::InputError;
+  using input::non_negative;
+  using input::open;
+  using input::positive;
+  using input::RealInterval;
+  using input::reject_entry;
+  using input::resolve_input_path;
+
+  using input::canonical_parameters;
+
   void
   declare_database_paths(dealii::ParameterHandler &prm)
   {
@@ -179,4 +196,4 @@ namespace compax::cli
   {
     return canonical_parameters(prm, {}, {"Checkpoints", "Validation"});
   }
-} // namespace compax::cli
+} // namespace compax::coupling

@@ -6,7 +6,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-namespace compax::cli
+namespace compax::coupling
 {
   /// Everything `compax die` reads from its .prm: the study in the
   /// library's types, and where it starts from.
@@ -63,4 +63,4 @@ namespace compax::cli
         reject_final_density(study, e.packing_density);
       }
   }
-} // namespace compax::cli
+} // namespace compax::coupling

@@ -1,13 +1,13 @@
 #pragma once
 
-#include "apps/rve/rve_parameters.h"
+#include "coupling/parameters/rve_parameters.h"
 #include "coupling/rve_database.h"
 
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
 
-namespace compax::cli
+namespace compax::coupling
 {
   /// An RVE response database to build: the cell and its paths (of
   /// `compax database`, or of `compax tablet` under Multiscale).
@@ -54,4 +54,4 @@ namespace compax::cli
   /// study.
   std::string
   database_fingerprint(const dealii::ParameterHandler &prm);
-} // namespace compax::cli
+} // namespace compax::coupling

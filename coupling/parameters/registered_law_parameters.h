@@ -10,7 +10,7 @@
 
 #include <string>
 
-namespace compax::cli
+namespace compax::coupling
 {
   /// Declares the subsection of every registered law that has parameters
   /// (@p local_only: only the laws the particle solvers can hold, those
@@ -31,4 +31,4 @@ namespace compax::cli
   /// documentation.
   std::string
   registered_law_documentation(bool local_only);
-} // namespace compax::cli
+} // namespace compax::coupling

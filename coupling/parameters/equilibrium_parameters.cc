@@ -1,9 +1,24 @@
-#include "apps/common/equilibrium_parameters.h"
+#include "coupling/parameters/equilibrium_parameters.h"
 
-#include "apps/cli/parameters.h"
+#include "input/input_error.h"
+#include "input/parameter_declaration.h"
+#include "input/parameter_file.h"
+#include "input/real_interval.h"
 
-namespace compax::cli
+namespace compax::coupling
 {
+  using input::closed;
+  using input::declare_quantity;
+  using input::format_number;
+  using input::get_real_list;
+  using input::InputError;
+  using input::non_negative;
+  using input::open;
+  using input::positive;
+  using input::RealInterval;
+  using input::reject_entry;
+  using input::resolve_input_path;
+
   void
   declare_equilibrium_tolerances(dealii::ParameterHandler &prm,
                                  const std::string        &force_floor_note)
@@ -39,4 +54,4 @@ namespace compax::cli
     options.step_tolerance  = prm.get_double("Step tolerance");
     options.max_iterations  = prm.get_integer("Maximum iterations");
   }
-} // namespace compax::cli
+} // namespace compax::coupling

@@ -1,9 +1,24 @@
-#include "apps/common/registered_law_parameters.h"
+#include "coupling/parameters/registered_law_parameters.h"
 
-#include "apps/cli/parameters.h"
+#include "input/input_error.h"
+#include "input/parameter_declaration.h"
+#include "input/parameter_file.h"
+#include "input/real_interval.h"
 
-namespace compax::cli
+namespace compax::coupling
 {
+  using input::closed;
+  using input::declare_quantity;
+  using input::format_number;
+  using input::get_real_list;
+  using input::InputError;
+  using input::non_negative;
+  using input::open;
+  using input::positive;
+  using input::RealInterval;
+  using input::reject_entry;
+  using input::resolve_input_path;
+
   namespace
   {
     bool
@@ -69,4 +84,4 @@ namespace compax::cli
                      : " (subsection " + law.subsection + ")");
     return text;
   }
-} // namespace compax::cli
+} // namespace compax::coupling
