@@ -4,7 +4,7 @@
 #include "apps/cli/parameters.h"
 #include "apps/common/gnuplot.h"
 #include "dem/nonlocal/square_die_compaction.h"
-#include "dem/nonlocal/square_die_deposition.h"
+#include "dem/nonlocal/two_material_bed.h"
 #include "dem/wall_clock.h"
 #include "io/csv_writer.h"
 
@@ -13,28 +13,16 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <optional>
 
 namespace compax::cli
 {
   namespace
   {
-    constexpr double pi = 3.14159265358979323846;
-
-    struct MaterialInput
-    {
-      dem::ElasticMaterial  elastic;
-      dem::SizeDistribution sizes;
-    };
-
     /// Everything the study needs, read from the parameters.
     struct BedStudy
     {
-      double                    width;
-      std::size_t               n_particles;
-      double                    volume_fraction_2;
-      MaterialInput             material[2];
-      std::uint64_t             seed;
-      double                    initial_density;
+      dem::TwoMaterialBed       bed;
       std::vector<std::string>  formulations;
       dem::BedCompactionOptions compaction;
       std::size_t               benchmark_particles;
@@ -95,37 +83,42 @@ namespace compax::cli
       prm.leave_subsection();
     }
 
-    MaterialInput
-    read_material(dealii::ParameterHandler &prm, const std::string &name)
+    void
+    read_material(dealii::ParameterHandler &prm,
+                  const std::string        &name,
+                  dem::ElasticMaterial     &elastic,
+                  dem::SizeDistribution    &sizes)
     {
-      MaterialInput m;
       prm.enter_subsection(name);
-      m.elastic.youngs_modulus = prm.get_double("Young's modulus");
-      m.elastic.poisson_ratio  = prm.get_double("Poisson's ratio");
-      m.sizes.median_radius    = prm.get_double("Median radius");
-      m.sizes.log_sigma        = prm.get_double("Log standard deviation");
-      m.sizes.min_radius       = prm.get_double("Minimum radius");
-      m.sizes.max_radius       = prm.get_double("Maximum radius");
+      elastic.youngs_modulus = prm.get_double("Young's modulus");
+      elastic.poisson_ratio  = prm.get_double("Poisson's ratio");
+      sizes.median_radius    = prm.get_double("Median radius");
+      sizes.log_sigma        = prm.get_double("Log standard deviation");
+      sizes.min_radius       = prm.get_double("Minimum radius");
+      sizes.max_radius       = prm.get_double("Maximum radius");
       prm.leave_subsection();
-      if (m.sizes.log_sigma > 0.0 && !(m.sizes.min_radius < m.sizes.max_radius))
+      if (sizes.log_sigma > 0.0 && !(sizes.min_radius < sizes.max_radius))
         reject_entry(name + "/Minimum radius",
-                     format_number(m.sizes.min_radius),
+                     format_number(sizes.min_radius),
                      "must be smaller than the maximum radius "
-                       + format_number(m.sizes.max_radius));
-      return m;
+                       + format_number(sizes.max_radius));
     }
 
     BedStudy
     read_study(dealii::ParameterHandler &prm)
     {
-      BedStudy s;
-      s.width             = prm.get_double("Die width");
-      s.n_particles       = prm.get_integer("Number of particles");
-      s.volume_fraction_2 = prm.get_double("Material 2 volume fraction");
-      s.material[0]       = read_material(prm, "Material 1");
-      s.material[1]       = read_material(prm, "Material 2");
-      s.seed              = prm.get_integer("Seed");
-      s.initial_density   = prm.get_double("Initial relative density");
+      BedStudy             s;
+      dem::TwoMaterialBed &bed = s.bed;
+      bed.width                = prm.get_double("Die width");
+      bed.n_particles          = prm.get_integer("Number of particles");
+      bed.volume_fraction_2    = prm.get_double("Material 2 volume fraction");
+      for (int m = 0; m < 2; ++m)
+        read_material(prm,
+                      "Material " + std::to_string(m + 1),
+                      bed.elastic[m],
+                      bed.sizes[m]);
+      bed.seed            = prm.get_integer("Seed");
+      bed.initial_density = prm.get_double("Initial relative density");
       for (const auto &item :
            dealii::Utilities::split_string_list(prm.get("Formulations"), ','))
         if (!item.empty())
@@ -151,62 +144,21 @@ namespace compax::cli
       c.hertz_consolidation             = prm.get_bool("Hertz consolidation");
       if (prm.get_bool("Solver trace"))
         c.krylov.trace = c.nonlocal_newton.trace = &std::cout;
-      if (!(c.final_density > s.initial_density))
+      if (!(c.final_density > bed.initial_density))
         reject_entry("Final relative density",
                      format_number(c.final_density),
                      "must exceed the initial relative density "
-                       + format_number(s.initial_density));
+                       + format_number(bed.initial_density));
       for (int m = 0; m < 2; ++m)
-        if (2.0 * s.material[m].sizes.largest() >= s.width)
+        if (2.0 * bed.sizes[m].largest() >= bed.width)
           reject_entry("Die width",
-                       format_number(s.width),
+                       format_number(bed.width),
                        "the largest particles do not fit into the die");
       prm.enter_subsection("Benchmark");
       s.benchmark_particles   = prm.get_integer("Particles");
       s.benchmark_repetitions = prm.get_integer("Repetitions");
       prm.leave_subsection();
       return s;
-    }
-
-    /// Mean volume of a log-normal sphere, 4/3 pi R_50^3 exp(9 sigma^2 / 2)
-    /// (the cut-offs ignored) [m^3].
-    double
-    mean_volume(const dem::SizeDistribution &d)
-    {
-      return 4.0 / 3.0 * pi * std::pow(d.median_radius, 3)
-             * std::exp(4.5 * d.log_sigma * d.log_sigma);
-    }
-
-    /// Particles of each material for the requested solid volume fraction.
-    std::vector<std::size_t>
-    counts(const BedStudy &s, const std::size_t n)
-    {
-      const double f  = s.volume_fraction_2;
-      const double v1 = mean_volume(s.material[0].sizes);
-      const double v2 = mean_volume(s.material[1].sizes);
-      const auto   n2 = static_cast<std::size_t>(
-        std::lround(n * f * v1 / ((1.0 - f) * v2 + f * v1)));
-      return {n - std::min(n, n2), std::min(n, n2)};
-    }
-
-    dem::ParticleSystem
-    deposit(const BedStudy &s, const double width, const std::size_t n)
-    {
-      dem::SquareDepositionParameters d;
-      d.width  = width;
-      d.sizes  = {s.material[0].sizes, s.material[1].sizes};
-      d.counts = counts(s, n);
-      d.seed   = s.seed;
-      return dem::square_die_deposition(d);
-    }
-
-    double
-    top_of(const dem::ParticleSystem &p)
-    {
-      double top = 0.0;
-      for (std::size_t i = 0; i < p.size(); ++i)
-        top = std::max(top, p.positions[i][2] + p.radii[i]);
-      return top;
     }
 
     class BedCommand : public Command
@@ -399,51 +351,24 @@ namespace compax::cli
         const BedStudy s = read_study(prm);
         if (s.benchmark_particles > 0)
           return benchmark(s, folder);
-        const std::vector<dem::ElasticMaterial> materials{
-          s.material[0].elastic, s.material[1].elastic};
-        const dem::ParticleSystem p = deposit(s, s.width, s.n_particles);
-        {
-          io::CsvWriter csv(folder / "particles.csv",
-                            {"x", "y", "z", "radius", "material"});
-          for (std::size_t i = 0; i < p.size(); ++i)
-            csv << p.positions[i][0] << p.positions[i][1] << p.positions[i][2]
-                << p.radii[i] << static_cast<int>(p.materials[i] + 1),
-              csv.end_row();
-        }
-        dem::SquareDie die;
-        die.width = s.width;
-        const double H0
-          = p.solid_volume() / (s.initial_density * s.width * s.width);
-        die.upper_punch_height = std::max(H0, top_of(p));
-        const auto n           = counts(s, s.n_particles);
+        const dem::TwoMaterialBed              &bed = s.bed;
+        const std::vector<dem::ElasticMaterial> materials{bed.elastic[0],
+                                                          bed.elastic[1]};
+        const dem::ParticleSystem               p
+          = dem::deposit_bed(bed, bed.width, bed.n_particles);
+        write_particles(folder, p);
+        const dem::SquareDie die = dem::starting_die(bed, p);
+        const auto           n   = dem::material_counts(bed, bed.n_particles);
         std::cout << "bed: " << p.size() << " particles (" << n[0]
                   << " of material 1, " << n[1]
                   << " of material 2), solid volume " << p.solid_volume()
-                  << " m^3, deposit top " << top_of(p)
+                  << " m^3, deposit top " << dem::bed_top(p)
                   << " m, start at H = " << die.height()
                   << " m, relative density "
                   << p.solid_volume() / die.enclosed_volume() << '\n';
 
         std::map<std::string, dem::BedCompactionResult> results;
-        io::CsvWriter                                   csv(folder / "bed.csv",
-                          {"formulation",
-                                                             "relative_density",
-                                                             "height",
-                                                             "upper_punch",
-                                                             "lower_punch",
-                                                             "x_lower",
-                                                             "x_upper",
-                                                             "y_lower",
-                                                             "y_upper",
-                                                             "lateral",
-                                                             "jammed",
-                                                             "newton_iterations",
-                                                             "fire_iterations",
-                                                             "rejected_steps",
-                                                             "sweeps",
-                                                             "coordination",
-                                                             "nonlocal_ratio",
-                                                             "relative_residual"});
+        io::CsvWriter csv(folder / "bed.csv", bed_columns());
         // The time of each formulation's run (kept out of bed.csv, so that
         // two runs of one input give the same file).
         io::CsvWriter timing(folder / "timing.csv", {"formulation", "seconds"});
@@ -455,57 +380,104 @@ namespace compax::cli
             results[f]    = dem::compact_square_die_bed(
               p, materials, die, f == "nonlocal", s.compaction, &std::cout);
             const double seconds = dem::seconds_since(t0);
-            const auto  &r       = results[f];
-            for (const auto &pt : r.points)
-              {
-                csv << f << pt.relative_density << pt.height;
-                for (const double w : pt.wall_force)
-                  csv << w;
-                csv << pt.lateral_force << static_cast<int>(pt.jammed)
-                    << pt.newton_iterations << pt.fire_iterations
-                    << pt.rejected_steps << static_cast<long long>(pt.sweeps)
-                    << pt.coordination << pt.nonlocal_ratio
-                    << pt.relative_residual;
-                csv.end_row();
-              }
+            write_points(csv, f, results[f]);
             timing << f << seconds;
             timing.end_row();
-            int newton = 0, steps = 0;
-            for (const auto &pt : r.points)
-              if (pt.jammed)
-                {
-                  newton += pt.newton_iterations;
-                  ++steps;
-                }
-            std::cout << "  " << f << ": " << r.points.size() << " steps, "
-                      << steps << " jammed steps, "
-                      << (steps ? double(newton) / steps : 0.0)
-                      << " Newton iterations per jammed step, " << seconds
-                      << " s\n";
-            if (!r.complete)
-              {
-                std::cout << "  " << f << " ends before relative density "
-                          << r.failure_density << ": " << r.stop_reason << '\n';
-                if (r.stop_reason.find("Algorithm 1") == std::string::npos)
-                  status = not_converged;
-              }
+            if (!summarize(f, results[f], seconds))
+              status = not_converged;
           }
         csv.close();
-        write_discrepancy(folder, results);
-        plot(folder, s);
+        if (results.count("hertz") && results.count("nonlocal"))
+          write_discrepancy(folder,
+                            dem::formulation_discrepancies(
+                              results.at("hertz"), results.at("nonlocal")));
+        plot(folder);
         return status;
       }
 
     private:
       static void
-      write_discrepancy(
-        const std::filesystem::path                           &folder,
-        const std::map<std::string, dem::BedCompactionResult> &results)
+      write_particles(const std::filesystem::path &folder,
+                      const dem::ParticleSystem   &p)
       {
-        if (!results.count("hertz") || !results.count("nonlocal"))
-          return;
-        const auto   &h = results.at("hertz").points;
-        const auto   &n = results.at("nonlocal").points;
+        io::CsvWriter csv(folder / "particles.csv",
+                          {"x", "y", "z", "radius", "material"});
+        for (std::size_t i = 0; i < p.size(); ++i)
+          csv << p.positions[i][0] << p.positions[i][1] << p.positions[i][2]
+              << p.radii[i] << static_cast<int>(p.materials[i] + 1),
+            csv.end_row();
+      }
+
+      static std::vector<std::string>
+      bed_columns()
+      {
+        return {"formulation",
+                "relative_density",
+                "height",
+                "upper_punch",
+                "lower_punch",
+                "x_lower",
+                "x_upper",
+                "y_lower",
+                "y_upper",
+                "lateral",
+                "jammed",
+                "newton_iterations",
+                "fire_iterations",
+                "rejected_steps",
+                "sweeps",
+                "coordination",
+                "nonlocal_ratio",
+                "relative_residual"};
+      }
+
+      static void
+      write_points(io::CsvWriter                  &csv,
+                   const std::string              &f,
+                   const dem::BedCompactionResult &r)
+      {
+        for (const auto &pt : r.points)
+          {
+            csv << f << pt.relative_density << pt.height;
+            for (const double w : pt.wall_force)
+              csv << w;
+            csv << pt.lateral_force << static_cast<int>(pt.jammed)
+                << pt.newton_iterations << pt.fire_iterations
+                << pt.rejected_steps << static_cast<long long>(pt.sweeps)
+                << pt.coordination << pt.nonlocal_ratio << pt.relative_residual;
+            csv.end_row();
+          }
+      }
+
+      /// Prints the run of formulation @p f; false if it stopped for a
+      /// reason other than Algorithm 1 (a solver that gave up).
+      static bool
+      summarize(const std::string              &f,
+                const dem::BedCompactionResult &r,
+                const double                    seconds)
+      {
+        int newton = 0, steps = 0;
+        for (const auto &pt : r.points)
+          if (pt.jammed)
+            {
+              newton += pt.newton_iterations;
+              ++steps;
+            }
+        std::cout << "  " << f << ": " << r.points.size() << " steps, " << steps
+                  << " jammed steps, " << (steps ? double(newton) / steps : 0.0)
+                  << " Newton iterations per jammed step, " << seconds
+                  << " s\n";
+        if (r.complete)
+          return true;
+        std::cout << "  " << f << " ends before relative density "
+                  << r.failure_density << ": " << r.stop_reason << '\n';
+        return r.stop_reason.find("Algorithm 1") != std::string::npos;
+      }
+
+      static void
+      write_discrepancy(const std::filesystem::path                    &folder,
+                        const std::vector<dem::FormulationDiscrepancy> &rows)
+      {
         io::CsvWriter csv(folder / "discrepancy.csv",
                           {"relative_density",
                            "hertz_load",
@@ -514,39 +486,33 @@ namespace compax::cli
                            "hertz_lateral",
                            "nonlocal_lateral",
                            "lateral_discrepancy"});
-        double        worst = 0.0, at = 0.0;
-        for (const auto &a : h)
-          for (const auto &b : n)
-            if (std::abs(a.relative_density - b.relative_density)
-                <= 1e-9 * a.relative_density)
+        const auto    optional = [&csv](const std::optional<double> &v) {
+          if (v)
+            csv << *v;
+          else
+            csv.empty();
+        };
+        double worst = 0.0, at = 0.0;
+        for (const auto &r : rows)
+          {
+            csv << r.relative_density << r.hertz_load << r.nonlocal_load;
+            optional(r.load_discrepancy);
+            csv << r.hertz_lateral << r.nonlocal_lateral;
+            optional(r.lateral_discrepancy);
+            csv.end_row();
+            if (r.load_discrepancy && std::abs(*r.load_discrepancy) > worst)
               {
-                const double la = a.wall_force[dem::SquareDie::upper_punch];
-                const double lb = b.wall_force[dem::SquareDie::upper_punch];
-                csv << a.relative_density << la << lb;
-                if (a.jammed && b.jammed && la > 0.0)
-                  csv << (lb - la) / la;
-                else
-                  csv.empty();
-                csv << a.lateral_force << b.lateral_force;
-                if (a.jammed && b.jammed && a.lateral_force > 0.0)
-                  csv << (b.lateral_force - a.lateral_force) / a.lateral_force;
-                else
-                  csv.empty();
-                csv.end_row();
-                if (a.jammed && b.jammed && la > 0.0
-                    && std::abs(lb - la) / la > worst)
-                  {
-                    worst = std::abs(lb - la) / la;
-                    at    = a.relative_density;
-                  }
+                worst = std::abs(*r.load_discrepancy);
+                at    = r.relative_density;
               }
+          }
         csv.close();
         std::cout << "largest load discrepancy |P_NL - P_H| / P_H = " << worst
                   << " at relative density " << at << '\n';
       }
 
       static void
-      plot(const std::filesystem::path &folder, const BedStudy &)
+      plot(const std::filesystem::path &folder)
       {
         const auto pick = [](const std::string &f, const std::string &col) {
           return "2:(strcol(1) eq '" + f + "' ? $" + col + " : 1/0)";
@@ -577,25 +543,6 @@ namespace compax::cli
       static int
       benchmark(const BedStudy &s, const std::filesystem::path &folder)
       {
-        const std::vector<dem::ElasticMaterial> materials{
-          s.material[0].elastic, s.material[1].elastic};
-        // A die wide enough that the bed is about as high as it is wide.
-        const double volume = s.benchmark_particles
-                              * (mean_volume(s.material[0].sizes)
-                                 + mean_volume(s.material[1].sizes))
-                              / 2.0;
-        const double width
-          = std::max(s.width, std::cbrt(volume / s.initial_density));
-        dem::ParticleSystem p = deposit(s, width, s.benchmark_particles);
-        dem::SquareDie      die;
-        die.width              = width;
-        die.upper_punch_height = top_of(p);
-        // Affine compression by 2 % of the height loads the contacts of
-        // the deposit.
-        for (auto &x : p.positions)
-          x[2] *= 0.98;
-        die.upper_punch_height *= 0.98;
-
         io::CsvWriter csv(folder / "benchmark.csv",
                           {"formulation",
                            "particles",
@@ -606,46 +553,28 @@ namespace compax::cli
                            "sweeps_warm",
                            "seconds_per_residual"});
         double        hertz_time = 0.0;
-        for (const bool nonlocal : {false, true})
+        for (const dem::ResidualTiming &t : dem::time_bed_residuals(
+               s.bed, s.benchmark_particles, s.benchmark_repetitions))
           {
-            dem::NonlocalBedOptions o;
-            o.nonlocal = nonlocal;
-            dem::NonlocalBedSystem system(p, materials, die, o);
-            Eigen::VectorXd        F;
-            system.residual(F); // builds the list; cold start of Algorithm 1
-            const unsigned cold = system.fixed_point().iterations;
-            // Warm starts, as between Newton iterates: tiny moves.
-            auto                  x       = system.coordinates();
-            const Eigen::VectorXd x0      = x;
-            std::size_t           sweeps0 = system.total_sweeps();
-            const auto            t0      = std::chrono::steady_clock::now();
-            for (int r = 0; r < s.benchmark_repetitions; ++r)
-              {
-                x = x0 * (1.0 + 1e-9 * (r % 2));
-                system.residual(F);
-              }
-            const double t = dem::seconds_since(t0) / s.benchmark_repetitions;
-            x              = x0;
-            const double warm = double(system.total_sweeps() - sweeps0)
-                                / s.benchmark_repetitions;
-            if (!nonlocal)
-              hertz_time = t;
-            csv << std::string(nonlocal ? "nonlocal" : "hertz")
-                << static_cast<long long>(p.size())
-                << static_cast<long long>(system.n_candidates())
-                << static_cast<long long>(system.n_loaded())
-                << static_cast<long long>(system.n_incidences())
-                << static_cast<long long>(cold) << warm << t;
+            if (!t.nonlocal)
+              hertz_time = t.seconds_per_residual;
+            csv << std::string(t.nonlocal ? "nonlocal" : "hertz")
+                << static_cast<long long>(t.particles)
+                << static_cast<long long>(t.candidates)
+                << static_cast<long long>(t.loaded)
+                << static_cast<long long>(t.incidences)
+                << static_cast<long long>(t.cold_sweeps) << t.warm_sweeps
+                << t.seconds_per_residual;
             csv.end_row();
-            std::cout << (nonlocal ? "nonlocal" : "hertz   ") << ": "
-                      << p.size() << " particles, " << system.n_candidates()
-                      << " candidate contacts, " << system.n_loaded()
-                      << " loaded, " << system.n_incidences()
-                      << " incidences; Algorithm 1 sweeps cold " << cold
-                      << ", warm " << warm << "; " << t * 1e3
-                      << " ms per residual";
-            if (nonlocal && hertz_time > 0.0)
-              std::cout << " (" << t / hertz_time << " x Hertz)";
+            std::cout << (t.nonlocal ? "nonlocal" : "hertz   ") << ": "
+                      << t.particles << " particles, " << t.candidates
+                      << " candidate contacts, " << t.loaded << " loaded, "
+                      << t.incidences << " incidences; Algorithm 1 sweeps cold "
+                      << t.cold_sweeps << ", warm " << t.warm_sweeps << "; "
+                      << t.seconds_per_residual * 1e3 << " ms per residual";
+            if (t.nonlocal && hertz_time > 0.0)
+              std::cout << " (" << t.seconds_per_residual / hertz_time
+                        << " x Hertz)";
             std::cout << '\n';
           }
         return success;

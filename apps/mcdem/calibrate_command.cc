@@ -10,6 +10,7 @@
 #include "io/csv_writer.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -80,6 +81,82 @@ namespace compax::cli
       if (name == "kc/k1")
         return law.adhesion_stiffness_ratio;
       return law.multicontact_prefactor;
+    }
+
+    /// The curve to fit: read from @p file (columns strain, stress, stage),
+    /// or, without a file, simulated with the setup's own law on a packing
+    /// of @p synthetic_seed (a synthetic test of the calibration).
+    dem::StressStrainCurve
+    measured_curve(const McdemSetup                 &setup,
+                   const std::string                &file,
+                   const std::array<std::string, 3> &columns,
+                   const std::uint64_t               synthetic_seed)
+    {
+      const auto truth = setup.material.normal_law;
+      if (!file.empty())
+        {
+          const dem::StressStrainCurve measured
+            = read_curve(file, columns[0], columns[1], columns[2]);
+          const double e_max
+            = *std::max_element(measured.strain.begin(), measured.strain.end());
+          if (std::abs(e_max - setup.protocol.target_strain) > 0.02)
+            std::cout << "Note: the measured curve reaches strain " << e_max
+                      << ", the protocol's target strain is "
+                      << setup.protocol.target_strain << "\n";
+          return measured;
+        }
+      std::cout << "No measured curve: synthetic curve with k2/k1 = "
+                << truth.unloading_stiffness_ratio
+                << ", kc/k1 = " << truth.adhesion_stiffness_ratio
+                << ", beta = " << truth.multicontact_prefactor
+                << " on packing seed " << synthetic_seed << "\n";
+      dem::RveSpec rve = setup.rve;
+      rve.seed         = synthetic_seed;
+      dem::UniaxialCompaction synthetic(setup.material, setup.settings, rve);
+      synthetic.prepare(setup.protocol, [](const dem::CompactionProgress &p) {
+        print_progress("[packing]", p);
+      });
+      return dem::compaction_curve(synthetic, truth, setup.protocol);
+    }
+
+    /// calibrated_law.prm: the fitted law as a Multi-contact law subsection.
+    void
+    write_calibrated_law(const std::filesystem::path  &folder,
+                         const dem::CalibrationResult &result,
+                         const double                  target_r2)
+    {
+      std::ofstream out(folder / "calibrated_law.prm");
+      out << "# compax calibrate: R^2 = " << result.r2 << " after "
+          << result.history.size() << " simulations (target " << target_r2
+          << ")\n"
+          << "subsection Multi-contact law\n"
+          << "  set Unloading stiffness ratio = "
+          << result.law.unloading_stiffness_ratio << "\n"
+          << "  set Adhesion stiffness ratio  = "
+          << result.law.adhesion_stiffness_ratio << "\n"
+          << "  set Plasticity depth          = " << result.law.plasticity_depth
+          << "\n"
+          << "  set Multi-contact prefactor   = "
+          << result.law.multicontact_prefactor << "\n"
+          << "end\n";
+    }
+
+    /// calibration_fit.csv: the measured and the best simulated stress.
+    void
+    write_fit(const std::filesystem::path  &folder,
+              const dem::StressStrainCurve &measured,
+              const dem::CalibrationResult &result)
+    {
+      const auto    y = dem::simulated_at(measured, result.best_curve);
+      io::CsvWriter fit(folder / "calibration_fit.csv",
+                        {"strain", "stage", "measured", "simulated"});
+      for (std::size_t k = 0; k < y.size(); ++k)
+        {
+          fit << measured.strain[k] << measured.stage[k] << measured.stress[k]
+              << y[k];
+          fit.end_row();
+        }
+      fit.close();
     }
 
     class CalibrateCommand : public Command
@@ -227,35 +304,12 @@ namespace compax::cli
         auto progress = [](const dem::CompactionProgress &p) {
           print_progress("[packing]", p);
         };
-        dem::StressStrainCurve measured;
-        const auto             truth = setup.material.normal_law;
-        if (file.empty())
-          {
-            std::cout << "No measured curve: synthetic curve with k2/k1 = "
-                      << truth.unloading_stiffness_ratio
-                      << ", kc/k1 = " << truth.adhesion_stiffness_ratio
-                      << ", beta = " << truth.multicontact_prefactor
-                      << " on packing seed " << synthetic_seed << "\n";
-            dem::RveSpec rve = setup.rve;
-            rve.seed         = synthetic_seed;
-            dem::UniaxialCompaction synthetic(setup.material,
-                                              setup.settings,
-                                              rve);
-            synthetic.prepare(setup.protocol, progress);
-            measured = dem::compaction_curve(synthetic, truth, setup.protocol);
-          }
-        else
-          {
-            measured
-              = read_curve(file, strain_column, stress_column, stage_column);
-            const double e_max = *std::max_element(measured.strain.begin(),
-                                                   measured.strain.end());
-            if (std::abs(e_max - setup.protocol.target_strain) > 0.02)
-              std::cout << "Note: the measured curve reaches strain " << e_max
-                        << ", the protocol's target strain is "
-                        << setup.protocol.target_strain << "\n";
-          }
-
+        const auto                   truth = setup.material.normal_law;
+        const dem::StressStrainCurve measured
+          = measured_curve(setup,
+                           file,
+                           {strain_column, stress_column, stage_column},
+                           synthetic_seed);
         dem::UniaxialCompaction prepared(setup.material,
                                          setup.settings,
                                          setup.rve);
@@ -287,34 +341,8 @@ namespace compax::cli
           });
         history.close();
 
-        {
-          std::ofstream out(folder / "calibrated_law.prm");
-          out << "# compax calibrate: R^2 = " << result.r2 << " after "
-              << result.history.size() << " simulations (target " << s.target_r2
-              << ")\n"
-              << "subsection Multi-contact law\n"
-              << "  set Unloading stiffness ratio = "
-              << result.law.unloading_stiffness_ratio << "\n"
-              << "  set Adhesion stiffness ratio  = "
-              << result.law.adhesion_stiffness_ratio << "\n"
-              << "  set Plasticity depth          = "
-              << result.law.plasticity_depth << "\n"
-              << "  set Multi-contact prefactor   = "
-              << result.law.multicontact_prefactor << "\n"
-              << "end\n";
-        }
-        {
-          const auto    y = dem::simulated_at(measured, result.best_curve);
-          io::CsvWriter fit(folder / "calibration_fit.csv",
-                            {"strain", "stage", "measured", "simulated"});
-          for (std::size_t k = 0; k < y.size(); ++k)
-            {
-              fit << measured.strain[k] << measured.stage[k]
-                  << measured.stress[k] << y[k];
-              fit.end_row();
-            }
-          fit.close();
-        }
+        write_calibrated_law(folder, result, s.target_r2);
+        write_fit(folder, measured, result);
         std::cout << "Best: ";
         for (std::size_t d = 0; d < s.parameters.size(); ++d)
           std::cout << s.parameters[d] << " = "
