@@ -22,16 +22,6 @@ namespace compax::coupling
     using dealii::Patterns::Bool;
     using dealii::Patterns::Integer;
     using dealii::Patterns::Selection;
-    using input::canonical_parameters;
-    using input::declare_quantity;
-    using input::format_number;
-    using input::InputError;
-    using input::non_negative;
-    using input::open;
-    using input::parameter_file_directory;
-    using input::positive;
-    using input::reject_entry;
-    using input::resolve_input_path;
 
     /// The mesh file @p entry names: absolute, or relative to the working
     /// folder or to the parameter file's folder.
@@ -43,7 +33,7 @@ namespace compax::coupling
       std::vector<fs::path> candidates{path};
       if (path.is_relative())
         {
-          const fs::path folder = parameter_file_directory();
+          const fs::path folder = input::parameter_file_directory();
           if (!folder.empty())
             candidates.push_back(folder / path);
         }
@@ -52,11 +42,12 @@ namespace compax::coupling
           return fs::absolute(candidate).lexically_normal();
       for (const auto &candidate : candidates)
         if (fs::is_directory(candidate))
-          reject_entry("Geometry/Mesh file",
-                       entry,
-                       "is a folder ("
-                         + fs::absolute(candidate).lexically_normal().string()
-                         + "), not a Gmsh .msh file");
+          input::reject_entry(
+            "Geometry/Mesh file",
+            entry,
+            "is a folder ("
+              + fs::absolute(candidate).lexically_normal().string()
+              + "), not a Gmsh .msh file");
       std::string where = "no such file";
       if (path.is_relative())
         {
@@ -65,16 +56,16 @@ namespace compax::coupling
             where += " or beside the parameter file, in "
                      + fs::absolute(candidates[1].parent_path()).string();
         }
-      reject_entry("Geometry/Mesh file", entry, where);
+      input::reject_entry("Geometry/Mesh file", entry, where);
     }
 
     /// Bad input of Output/Resume from, for the reason @p e gives.
     [[noreturn]] void
     reject_resume(const TabletSetup &s, const TabletResumeError &e)
     {
-      reject_entry("Output/Resume from",
-                   s.output.resume_from.string(),
-                   e.what());
+      input::reject_entry("Output/Resume from",
+                          s.output.resume_from.string(),
+                          e.what());
     }
   } // namespace
 
@@ -83,40 +74,44 @@ namespace compax::coupling
                             const fem::MaterialRegistry &materials)
   {
     prm.enter_subsection("Geometry");
-    declare_quantity(prm,
-                     "Die diameter",
-                     "10e-3",
-                     positive(),
-                     "m",
-                     "Inner diameter D of the cylindrical die (flat-faced "
-                     "punches of the same diameter).");
-    declare_quantity(prm,
-                     "Fill height",
-                     "7e-3",
-                     positive(),
-                     "m",
-                     "Height of the powder column as filled; the die is "
-                     "filled to its top, so this is also the die-top height "
-                     "above the lower punch. Under a concave punch: the "
-                     "height at the die wall (the powder also fills the "
-                     "cup).");
-    declare_quantity(prm,
-                     "Cup depth",
-                     "0",
-                     non_negative(),
-                     "m",
-                     "Depth h_c of the spherical cup of a concave upper "
-                     "punch (the tablet is h_c thicker on the axis than at "
-                     "the die wall); 0: flat-faced punch.");
-    declare_quantity(prm,
-                     "Cup radius of curvature",
-                     "16e-3",
-                     positive(),
-                     "m",
-                     "Radius of curvature R_c of the cup; the cup edge "
-                     "radius sqrt(2 R_c h_c - h_c^2) must not exceed D/2 "
-                     "(the rest of the face is a flat land). Used when Cup "
-                     "depth > 0.");
+    input::declare_quantity(
+      prm,
+      "Die diameter",
+      "10e-3",
+      input::positive(),
+      "m",
+      "Inner diameter D of the cylindrical die (flat-faced "
+      "punches of the same diameter).");
+    input::declare_quantity(
+      prm,
+      "Fill height",
+      "7e-3",
+      input::positive(),
+      "m",
+      "Height of the powder column as filled; the die is "
+      "filled to its top, so this is also the die-top height "
+      "above the lower punch. Under a concave punch: the "
+      "height at the die wall (the powder also fills the "
+      "cup).");
+    input::declare_quantity(
+      prm,
+      "Cup depth",
+      "0",
+      input::non_negative(),
+      "m",
+      "Depth h_c of the spherical cup of a concave upper "
+      "punch (the tablet is h_c thicker on the axis than at "
+      "the die wall); 0: flat-faced punch.");
+    input::declare_quantity(
+      prm,
+      "Cup radius of curvature",
+      "16e-3",
+      input::positive(),
+      "m",
+      "Radius of curvature R_c of the cup; the cup edge "
+      "radius sqrt(2 R_c h_c - h_c^2) must not exceed D/2 "
+      "(the rest of the face is a flat land). Used when Cup "
+      "depth > 0.");
     prm.declare_entry(
       "Mesh file",
       "",
@@ -140,26 +135,27 @@ namespace compax::coupling
                       "axisymmetric: r-z model with hoop terms (default); "
                       "quarter-3d: quarter cylinder with symmetry planes. "
                       "Unit: none.");
-    declare_quantity(prm,
-                     "Radial cells",
-                     "8",
-                     Integer(1, 256),
-                     "-",
-                     "Cells across the radius of the coarse r-z mesh (the "
-                     "axial count makes cells square). Ignored by "
-                     "quarter-3d.");
-    declare_quantity(prm,
-                     "Refinements",
-                     "0",
-                     Integer(0, 6),
-                     "-",
-                     "Global refinements of the coarse mesh.");
-    declare_quantity(prm,
-                     "Polynomial degree",
-                     "1",
-                     Integer(1, 3),
-                     "-",
-                     "Degree of the displacement finite element.");
+    input::declare_quantity(
+      prm,
+      "Radial cells",
+      "8",
+      Integer(1, 256),
+      "-",
+      "Cells across the radius of the coarse r-z mesh (the "
+      "axial count makes cells square). Ignored by "
+      "quarter-3d.");
+    input::declare_quantity(prm,
+                            "Refinements",
+                            "0",
+                            Integer(0, 6),
+                            "-",
+                            "Global refinements of the coarse mesh.");
+    input::declare_quantity(prm,
+                            "Polynomial degree",
+                            "1",
+                            Integer(1, 3),
+                            "-",
+                            "Degree of the displacement finite element.");
     prm.leave_subsection();
 
     prm.enter_subsection("Material");
@@ -168,23 +164,23 @@ namespace compax::coupling
                       Selection(materials.selection()),
                       "Constitutive law of the compact: "
                         + materials.documentation() + ". Unit: none.");
-    declare_quantity(prm,
-                     "Initial relative density",
-                     "0.5",
-                     open(0.0, 1.0),
-                     "-",
-                     "Relative density of the powder as filled.");
+    input::declare_quantity(prm,
+                            "Initial relative density",
+                            "0.5",
+                            input::open(0.0, 1.0),
+                            "-",
+                            "Relative density of the powder as filled.");
     materials.declare_parameters(prm);
     prm.leave_subsection();
 
     prm.enter_subsection("Die");
-    declare_quantity(prm,
-                     "Wall friction coefficient",
-                     "0.25",
-                     non_negative(),
-                     "-",
-                     "Coulomb friction coefficient mu between compact "
-                     "and die wall (punch faces are frictionless).");
+    input::declare_quantity(prm,
+                            "Wall friction coefficient",
+                            "0.25",
+                            input::non_negative(),
+                            "-",
+                            "Coulomb friction coefficient mu between compact "
+                            "and die wall (punch faces are frictionless).");
     prm.declare_entry("Wall friction table",
                       "",
                       dealii::Patterns::Anything(),
@@ -193,109 +189,116 @@ namespace compax::coupling
                       "increasing density, e.g. '0.5:0.4, 0.9:0.2' "
                       "(linear in between, constant beyond); empty: the "
                       "constant Wall friction coefficient. Unit: -:-.");
-    declare_quantity(prm,
-                     "Entry taper length",
-                     "0",
-                     non_negative(),
-                     "m",
-                     "Length below the die top over which the bore widens "
-                     "(entry chamfer); the tablet then leaves the wall "
-                     "gradually during ejection. 0: sharp die top.");
-    declare_quantity(prm,
-                     "Entry taper opening",
-                     "20e-6",
-                     non_negative(),
-                     "m",
-                     "Radial widening of the bore at the die top.");
-    declare_quantity(prm,
-                     "Penalty factor",
-                     "100",
-                     positive(),
-                     "-",
-                     "Contact penalty = factor x largest current Young's "
-                     "modulus / smallest cell size; penetration is about "
-                     "pressure x cell size / (factor E).");
-    declare_quantity(prm,
-                     "Tangential penalty ratio",
-                     "0.1",
-                     positive(),
-                     "-",
-                     "Stick stiffness of the wall friction as a multiple "
-                     "of the normal penalty.");
+    input::declare_quantity(
+      prm,
+      "Entry taper length",
+      "0",
+      input::non_negative(),
+      "m",
+      "Length below the die top over which the bore widens "
+      "(entry chamfer); the tablet then leaves the wall "
+      "gradually during ejection. 0: sharp die top.");
+    input::declare_quantity(prm,
+                            "Entry taper opening",
+                            "20e-6",
+                            input::non_negative(),
+                            "m",
+                            "Radial widening of the bore at the die top.");
+    input::declare_quantity(
+      prm,
+      "Penalty factor",
+      "100",
+      input::positive(),
+      "-",
+      "Contact penalty = factor x largest current Young's "
+      "modulus / smallest cell size; penetration is about "
+      "pressure x cell size / (factor E).");
+    input::declare_quantity(
+      prm,
+      "Tangential penalty ratio",
+      "0.1",
+      input::positive(),
+      "-",
+      "Stick stiffness of the wall friction as a multiple "
+      "of the normal penalty.");
     prm.leave_subsection();
 
     prm.enter_subsection("Process");
-    declare_quantity(prm,
-                     "Compaction displacement",
-                     "3.11e-3",
-                     positive(),
-                     "m",
-                     "Upper punch travel into the die (default: from "
-                     "density 0.5 to 0.9 for a 7 mm fill).");
-    declare_quantity(prm,
-                     "Unloading displacement",
-                     "0.3e-3",
-                     non_negative(),
-                     "m",
-                     "Upper punch withdrawal after compaction (more than "
-                     "the elastic springback, so the punch separates).");
-    declare_quantity(prm,
-                     "Ejection displacement",
-                     "7.2e-3",
-                     non_negative(),
-                     "m",
-                     "Lower punch travel during ejection; beyond the fill "
-                     "height the tablet has left the die.");
-    declare_quantity(prm,
-                     "Compaction steps",
-                     "240",
-                     Integer(1, 100000),
-                     "-",
-                     "Load steps of the compaction stage.");
-    declare_quantity(prm,
-                     "Unloading steps",
-                     "40",
-                     Integer(0, 100000),
-                     "-",
-                     "Load steps of the unloading stage (0: none; then "
-                     "Ejection steps must be 0 too).");
-    declare_quantity(prm,
-                     "Ejection steps",
-                     "40",
-                     Integer(0, 100000),
-                     "-",
-                     "Load steps of the ejection stage (0: no ejection).");
-    declare_quantity(prm,
-                     "Punch speed",
-                     "0.05",
-                     positive(),
-                     "m/s",
-                     "Punch speed that turns travel into the time column "
-                     "(the model is quasi-static).");
+    input::declare_quantity(prm,
+                            "Compaction displacement",
+                            "3.11e-3",
+                            input::positive(),
+                            "m",
+                            "Upper punch travel into the die (default: from "
+                            "density 0.5 to 0.9 for a 7 mm fill).");
+    input::declare_quantity(
+      prm,
+      "Unloading displacement",
+      "0.3e-3",
+      input::non_negative(),
+      "m",
+      "Upper punch withdrawal after compaction (more than "
+      "the elastic springback, so the punch separates).");
+    input::declare_quantity(
+      prm,
+      "Ejection displacement",
+      "7.2e-3",
+      input::non_negative(),
+      "m",
+      "Lower punch travel during ejection; beyond the fill "
+      "height the tablet has left the die.");
+    input::declare_quantity(prm,
+                            "Compaction steps",
+                            "240",
+                            Integer(1, 100000),
+                            "-",
+                            "Load steps of the compaction stage.");
+    input::declare_quantity(prm,
+                            "Unloading steps",
+                            "40",
+                            Integer(0, 100000),
+                            "-",
+                            "Load steps of the unloading stage (0: none; then "
+                            "Ejection steps must be 0 too).");
+    input::declare_quantity(
+      prm,
+      "Ejection steps",
+      "40",
+      Integer(0, 100000),
+      "-",
+      "Load steps of the ejection stage (0: no ejection).");
+    input::declare_quantity(
+      prm,
+      "Punch speed",
+      "0.05",
+      input::positive(),
+      "m/s",
+      "Punch speed that turns travel into the time column "
+      "(the model is quasi-static).");
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
-    declare_quantity(prm,
-                     "Tolerance",
-                     "1e-8",
-                     open(0.0, 1.0),
-                     "-",
-                     "Newton tolerance on the residual relative to the "
-                     "internal and contact forces (multiscale-fe2: at "
-                     "least Multiscale/FE2 stress resolution).");
-    declare_quantity(prm,
-                     "Max iterations",
-                     "30",
-                     Integer(1, 1000),
-                     "-",
-                     "Newton iterations per load increment.");
-    declare_quantity(prm,
-                     "Max step cuts",
-                     "8",
-                     Integer(0, 30),
-                     "-",
-                     "Times a load step may be halved before the run "
-                     "stops without convergence.");
+    input::declare_quantity(prm,
+                            "Tolerance",
+                            "1e-8",
+                            input::open(0.0, 1.0),
+                            "-",
+                            "Newton tolerance on the residual relative to the "
+                            "internal and contact forces (multiscale-fe2: at "
+                            "least Multiscale/FE2 stress resolution).");
+    input::declare_quantity(prm,
+                            "Max iterations",
+                            "30",
+                            Integer(1, 1000),
+                            "-",
+                            "Newton iterations per load increment.");
+    input::declare_quantity(prm,
+                            "Max step cuts",
+                            "8",
+                            Integer(0, 30),
+                            "-",
+                            "Times a load step may be halved before the run "
+                            "stops without convergence.");
     prm.declare_entry("Linear solver",
                       "direct",
                       Selection("direct|gmres-amg"),
@@ -312,13 +315,14 @@ namespace compax::coupling
     prm.leave_subsection();
 
     prm.enter_subsection("Output");
-    declare_quantity(prm,
-                     "Field interval",
-                     "20",
-                     Integer(1, 100000),
-                     "-",
-                     "Write the PVD/VTU fields every this many steps (and "
-                     "at the end of every stage).");
+    input::declare_quantity(
+      prm,
+      "Field interval",
+      "20",
+      Integer(1, 100000),
+      "-",
+      "Write the PVD/VTU fields every this many steps (and "
+      "at the end of every stage).");
     prm.declare_entry("Write fields",
                       "true",
                       Bool(),
@@ -329,14 +333,15 @@ namespace compax::coupling
                       "With Write fields: also write the fields as "
                       "tablet_NNNN.h5 (parallel HDF5) listed by "
                       "tablet.xdmf, for ParaView or VisIt. Unit: none.");
-    declare_quantity(prm,
-                     "Checkpoint interval",
-                     "50",
-                     Integer(0, 100000),
-                     "-",
-                     "Write a checkpoint (folder 'checkpoint' in the "
-                     "output) every this many steps and when a step does "
-                     "not converge; 0: none.");
+    input::declare_quantity(
+      prm,
+      "Checkpoint interval",
+      "50",
+      Integer(0, 100000),
+      "-",
+      "Write a checkpoint (folder 'checkpoint' in the "
+      "output) every this many steps and when a step does "
+      "not converge; 0: none.");
     prm.declare_entry("Resume from",
                       "",
                       dealii::Patterns::Anything(),
@@ -399,11 +404,12 @@ namespace compax::coupling
           }
         catch (const std::exception &e)
           {
-            reject_entry("Geometry/Mesh file",
-                         mesh_entry,
-                         std::string(e.what())
-                           + (s.three_d ? " (Mesh/Model = quarter-3d)"
-                                        : " (Mesh/Model = axisymmetric)"));
+            input::reject_entry("Geometry/Mesh file",
+                                mesh_entry,
+                                std::string(e.what())
+                                  + (s.three_d
+                                       ? " (Mesh/Model = quarter-3d)"
+                                       : " (Mesh/Model = axisymmetric)"));
           }
         // The parameters written with the results name the file that
         // was used, from anywhere.
@@ -418,9 +424,10 @@ namespace compax::coupling
         }
       catch (const std::exception &e)
         {
-          reject_entry("Cup depth",
-                       format_number(s.solver.geometry.upper_punch.cup_depth),
-                       e.what());
+          input::reject_entry("Cup depth",
+                              input::format_number(
+                                s.solver.geometry.upper_punch.cup_depth),
+                              e.what());
         }
 
     prm.enter_subsection("Material");
@@ -432,7 +439,7 @@ namespace compax::coupling
         {
           s.material = model.create(prm);
         }
-      catch (const InputError &)
+      catch (const input::InputError &)
         {
           prm.leave_subsection();
           throw;
@@ -468,10 +475,10 @@ namespace compax::coupling
                   && !(rho > s.solver.wall_friction_table.back().first)))
             {
               prm.leave_subsection();
-              reject_entry("Wall friction table",
-                           table,
-                           "expected 'density:mu' pairs with densities "
-                           "increasing in (0, 1] and mu >= 0");
+              input::reject_entry("Wall friction table",
+                                  table,
+                                  "expected 'density:mu' pairs with densities "
+                                  "increasing in (0, 1] and mu >= 0");
             }
           s.solver.wall_friction_table.emplace_back(rho, mu);
         }
@@ -510,29 +517,31 @@ namespace compax::coupling
     prm.leave_subsection();
 
     if (s.process.ejection_steps > 0 && s.process.unloading_steps == 0)
-      reject_entry("Ejection steps",
-                   std::to_string(s.process.ejection_steps),
-                   "ejection needs an unloading stage first (Unloading "
-                   "steps > 0)");
+      input::reject_entry("Ejection steps",
+                          std::to_string(s.process.ejection_steps),
+                          "ejection needs an unloading stage first (Unloading "
+                          "steps > 0)");
     if (!(s.process.compaction_displacement < s.solver.geometry.fill_height))
-      reject_entry("Compaction displacement",
-                   std::to_string(s.process.compaction_displacement),
-                   "must be smaller than the fill height "
-                     + std::to_string(s.solver.geometry.fill_height) + " m");
+      input::reject_entry("Compaction displacement",
+                          std::to_string(s.process.compaction_displacement),
+                          "must be smaller than the fill height "
+                            + std::to_string(s.solver.geometry.fill_height)
+                            + " m");
     // A resumed run continues the same cycle: every entry but where it
     // resumes from, how often it checkpoints, how hard the solver tries
     // (a run that stopped without convergence is resumed with more
     // iterations or cuts) and how much it prints; files by their content.
     s.output.parameters
-      = canonical_parameters(prm,
-                             {},
-                             {"Output/Resume from",
-                              "Output/Checkpoint interval",
-                              "Solver/Max iterations",
-                              "Solver/Max step cuts",
-                              "Solver/Linear solver",
-                              "Solver/Print Newton residuals"},
-                             {"Geometry/Mesh file", "Material/DPC table"});
+      = input::canonical_parameters(prm,
+                                    {},
+                                    {"Output/Resume from",
+                                     "Output/Checkpoint interval",
+                                     "Solver/Max iterations",
+                                     "Solver/Max step cuts",
+                                     "Solver/Linear solver",
+                                     "Solver/Print Newton residuals"},
+                                    {"Geometry/Mesh file",
+                                     "Material/DPC table"});
     // A checkpoint that cannot be resumed is refused before any output
     // exists (the ranks are checked when it runs).
     if (!s.output.resume_from.empty())

@@ -8,36 +8,23 @@
 
 namespace compax::coupling
 {
-  using input::closed;
-  using input::declare_quantity;
-  using input::format_number;
-  using input::get_real_list;
-  using input::InputError;
-  using input::non_negative;
-  using input::open;
-  using input::positive;
-  using input::RealInterval;
-  using input::reject_entry;
-  using input::resolve_input_path;
-
-  using input::canonical_parameters;
 
   void
   declare_database_paths(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Paths");
-    declare_quantity(prm,
-                     "Final relative density",
-                     "0.85",
-                     open(0.0, 1.0),
-                     "-",
-                     "Uniaxial compaction stops here.");
-    declare_quantity(prm,
-                     "Compaction strain step",
-                     "0.01",
-                     open(0.0, 0.1),
-                     "-",
-                     "Axial logarithmic strain per compaction step.");
+    input::declare_quantity(prm,
+                            "Final relative density",
+                            "0.85",
+                            input::open(0.0, 1.0),
+                            "-",
+                            "Uniaxial compaction stops here.");
+    input::declare_quantity(prm,
+                            "Compaction strain step",
+                            "0.01",
+                            input::open(0.0, 0.1),
+                            "-",
+                            "Axial logarithmic strain per compaction step.");
     prm.declare_entry("Branch densities",
                       "0.70, 0.75, 0.80, 0.85",
                       dealii::Patterns::List(dealii::Patterns::Double(0, 1), 2),
@@ -45,24 +32,24 @@ namespace compax::coupling
                       "branches into unloading and shear probes: "
                       "increasing, above the initial and at most the "
                       "final density; one DPC table row each.");
-    declare_quantity(prm,
-                     "Shear strain",
-                     "0.04",
-                     open(0.0, 0.5),
-                     "-",
-                     "Engineering shear strain gamma_xz of each probe.");
+    input::declare_quantity(prm,
+                            "Shear strain",
+                            "0.04",
+                            input::open(0.0, 0.5),
+                            "-",
+                            "Engineering shear strain gamma_xz of each probe.");
     prm.declare_entry("Shear steps",
                       "20",
                       dealii::Patterns::Integer(2, 10000),
                       "Steps of each shear probe, in [2, 1e4]; the "
                       "second half gives the failure state.");
-    declare_quantity(prm,
-                     "Confinement strain",
-                     "0.004",
-                     open(0.0, 0.1),
-                     "-",
-                     "Volumetric compression before the second shear "
-                     "probe.");
+    input::declare_quantity(prm,
+                            "Confinement strain",
+                            "0.004",
+                            input::open(0.0, 0.1),
+                            "-",
+                            "Volumetric compression before the second shear "
+                            "probe.");
     prm.declare_entry("Radial strain ratios",
                       "-0.5, 0.5, 1.0",
                       dealii::Patterns::List(dealii::Patterns::Double(-0.5, 1),
@@ -73,13 +60,13 @@ namespace compax::coupling
                       "uniaxial strain; 1: hydrostatic); they are not used "
                       "in the fit, so they measure the fitted law on "
                       "held-out paths (validation.csv). Empty: none.");
-    declare_quantity(prm,
-                     "Radial strain",
-                     "0.02",
-                     open(0.0, 0.2),
-                     "-",
-                     "Axial compressive logarithmic strain of each "
-                     "radial-strain probe.");
+    input::declare_quantity(prm,
+                            "Radial strain",
+                            "0.02",
+                            input::open(0.0, 0.2),
+                            "-",
+                            "Axial compressive logarithmic strain of each "
+                            "radial-strain probe.");
     prm.declare_entry("Radial steps",
                       "8",
                       dealii::Patterns::Integer(1, 10000),
@@ -109,31 +96,33 @@ namespace compax::coupling
     prm.enter_subsection("Paths");
     spec.final_density      = prm.get_double("Final relative density");
     spec.strain_step        = prm.get_double("Compaction strain step");
-    spec.branch_densities   = get_real_list(prm, "Branch densities");
+    spec.branch_densities   = input::get_real_list(prm, "Branch densities");
     const std::string list  = prm.get("Branch densities");
     spec.shear_strain       = prm.get_double("Shear strain");
     spec.shear_steps        = prm.get_integer("Shear steps");
     spec.confinement_strain = prm.get_double("Confinement strain");
-    spec.radial_ratios      = get_real_list(prm, "Radial strain ratios");
+    spec.radial_ratios      = input::get_real_list(prm, "Radial strain ratios");
     spec.radial_strain      = prm.get_double("Radial strain");
     spec.radial_steps       = prm.get_integer("Radial steps");
     prm.leave_subsection();
 
     if (spec.branch_densities.size() < 2)
-      reject_entry(where + "Paths/Branch densities",
-                   list,
-                   "a density-dependent cap needs at least two branches");
+      input::reject_entry(
+        where + "Paths/Branch densities",
+        list,
+        "a density-dependent cap needs at least two branches");
     for (std::size_t k = 0; k < spec.branch_densities.size(); ++k)
       {
         const double rho = spec.branch_densities[k];
         if (!(rho > spec.packing.relative_density && rho <= spec.final_density)
             || (k > 0 && !(rho > spec.branch_densities[k - 1])))
-          reject_entry(where + "Paths/Branch densities",
-                       list,
-                       "increasing densities in (Packing/Initial relative "
-                       "density, Paths/Final relative density] = ("
-                         + format_number(spec.packing.relative_density) + ", "
-                         + format_number(spec.final_density) + "]");
+          input::reject_entry(
+            where + "Paths/Branch densities",
+            list,
+            "increasing densities in (Packing/Initial relative "
+            "density, Paths/Final relative density] = ("
+              + input::format_number(spec.packing.relative_density) + ", "
+              + input::format_number(spec.final_density) + "]");
       }
     return study;
   }
@@ -187,13 +176,13 @@ namespace compax::coupling
     o.held_out_packing = prm.get_bool("Held-out packing");
     prm.leave_subsection();
     if (!o.resume_from.empty())
-      o.resume_from = resolve_input_path(o.resume_from).string();
+      o.resume_from = input::resolve_input_path(o.resume_from).string();
     return o;
   }
 
   std::string
   database_fingerprint(const dealii::ParameterHandler &prm)
   {
-    return canonical_parameters(prm, {}, {"Checkpoints", "Validation"});
+    return input::canonical_parameters(prm, {}, {"Checkpoints", "Validation"});
   }
 } // namespace compax::coupling

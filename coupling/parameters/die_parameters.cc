@@ -17,19 +17,6 @@
 
 namespace compax::coupling
 {
-  using input::canonical_parameters;
-  using input::closed;
-  using input::declare_quantity;
-  using input::format_number;
-  using input::get_real_list;
-  using input::InputError;
-  using input::non_negative;
-  using input::open;
-  using input::positive;
-  using input::RealInterval;
-  using input::reject_entry;
-  using input::resolve_input_path;
-
   namespace
   {
     /// Material 2 of Gonzalez 2018, Table 1 (R = 220 um).
@@ -60,45 +47,48 @@ namespace compax::coupling
                       "true: K_Ic = sqrt(2 (2 omega + G_p) E) from the "
                       "Material's surface energy omega (Gonzalez 2018 after "
                       "Eq. 5); false: the Fracture toughness entry.");
-    declare_quantity(prm,
-                     "Fracture toughness",
-                     "1.26e6",
-                     non_negative(),
-                     "Pa m^1/2",
-                     "Fracture toughness K_Ic of the solid bridges between "
-                     "particles (Material 1 of Gonzalez 2018, Table 1); 0 "
-                     "for no bonding. With two materials: between two "
-                     "particles of Material.");
-    declare_quantity(prm,
-                     "Fracture toughness 2",
-                     "6.19e6",
-                     non_negative(),
-                     "Pa m^1/2",
-                     "K_Ic of bridges between two particles of Material 2 "
-                     "(used with two materials; Material 2 of Gonzalez 2018, "
-                     "Table 1).");
-    declare_quantity(prm,
-                     "Cross fracture toughness",
-                     "2.62e6",
-                     non_negative(),
-                     "Pa m^1/2",
-                     "K_Ic of bridges between a particle of Material and one "
-                     "of Material 2 (used with two materials). The default is "
-                     "the formula after Gonzalez 2018 Eq. 5 with the surface "
-                     "energies of Materials 1 and 2 of Table 1.");
-    declare_quantity(prm,
-                     "Plastic dissipation",
-                     "0",
-                     non_negative(),
-                     "J/m^2",
-                     "G_p added to the surface energies when K_Ic is "
-                     "computed from energies.");
-    declare_quantity(prm,
-                     "Regularization parameter",
-                     "0.01",
-                     positive(),
-                     "-",
-                     "xi_B of the regularized law, Eq. (4).");
+    input::declare_quantity(
+      prm,
+      "Fracture toughness",
+      "1.26e6",
+      input::non_negative(),
+      "Pa m^1/2",
+      "Fracture toughness K_Ic of the solid bridges between "
+      "particles (Material 1 of Gonzalez 2018, Table 1); 0 "
+      "for no bonding. With two materials: between two "
+      "particles of Material.");
+    input::declare_quantity(
+      prm,
+      "Fracture toughness 2",
+      "6.19e6",
+      input::non_negative(),
+      "Pa m^1/2",
+      "K_Ic of bridges between two particles of Material 2 "
+      "(used with two materials; Material 2 of Gonzalez 2018, "
+      "Table 1).");
+    input::declare_quantity(
+      prm,
+      "Cross fracture toughness",
+      "2.62e6",
+      input::non_negative(),
+      "Pa m^1/2",
+      "K_Ic of bridges between a particle of Material and one "
+      "of Material 2 (used with two materials). The default is "
+      "the formula after Gonzalez 2018 Eq. 5 with the surface "
+      "energies of Materials 1 and 2 of Table 1.");
+    input::declare_quantity(prm,
+                            "Plastic dissipation",
+                            "0",
+                            input::non_negative(),
+                            "J/m^2",
+                            "G_p added to the surface energies when K_Ic is "
+                            "computed from energies.");
+    input::declare_quantity(prm,
+                            "Regularization parameter",
+                            "0.01",
+                            input::positive(),
+                            "-",
+                            "xi_B of the regularized law, Eq. (4).");
     prm.declare_entry("Bridges with walls",
                       "false",
                       dealii::Patterns::Bool(),
@@ -112,44 +102,43 @@ namespace compax::coupling
                       dealii::Patterns::Integer(1, 10000000),
                       "Particles dropped by ballistic deposition "
                       "(Jullien & Meakin 1989), in [1, 1e7].");
-    declare_quantity(prm,
-                     "Die diameter",
-                     "4e-3",
-                     positive(),
-                     "m",
-                     "Diameter D of the rigid cylindrical die.");
-    declare_quantity(prm,
-                     "Log-normal sigma",
-                     "0",
-                     non_negative(),
-                     "-",
-                     "Standard deviation of ln R of a log-normal size "
-                     "distribution with median the Material's Radius; 0 "
-                     "for a monodisperse bed.");
-    declare_quantity(prm,
-                     "Minimum radius",
-                     "0",
-                     non_negative(),
-                     "m",
-                     "Lower cut-off of the log-normal distribution.");
-    declare_quantity(prm,
-                     "Maximum radius",
-                     "1",
-                     positive(),
-                     "m",
-                     "Upper cut-off of the log-normal distribution.");
-    declare_quantity(prm,
-                     "Material fractions",
-                     "1",
-                     dealii::Patterns::List(dealii::Patterns::Double(0, 1),
-                                            1,
-                                            2),
-                     "-",
-                     "Number fractions of the particle species, summing to "
-                     "1: one value (Material only) or two (Material, "
-                     "Material 2; each particle draws its species at "
-                     "random with these probabilities). Both species must "
-                     "have the same Radius (one size distribution).");
+    input::declare_quantity(prm,
+                            "Die diameter",
+                            "4e-3",
+                            input::positive(),
+                            "m",
+                            "Diameter D of the rigid cylindrical die.");
+    input::declare_quantity(prm,
+                            "Log-normal sigma",
+                            "0",
+                            input::non_negative(),
+                            "-",
+                            "Standard deviation of ln R of a log-normal size "
+                            "distribution with median the Material's Radius; 0 "
+                            "for a monodisperse bed.");
+    input::declare_quantity(prm,
+                            "Minimum radius",
+                            "0",
+                            input::non_negative(),
+                            "m",
+                            "Lower cut-off of the log-normal distribution.");
+    input::declare_quantity(prm,
+                            "Maximum radius",
+                            "1",
+                            input::positive(),
+                            "m",
+                            "Upper cut-off of the log-normal distribution.");
+    input::declare_quantity(
+      prm,
+      "Material fractions",
+      "1",
+      dealii::Patterns::List(dealii::Patterns::Double(0, 1), 1, 2),
+      "-",
+      "Number fractions of the particle species, summing to "
+      "1: one value (Material only) or two (Material, "
+      "Material 2; each particle draws its species at "
+      "random with these probabilities). Both species must "
+      "have the same Radius (one size distribution).");
     prm.declare_entry("Seed",
                       "1",
                       dealii::Patterns::Integer(0),
@@ -158,34 +147,37 @@ namespace compax::coupling
     prm.leave_subsection();
 
     prm.enter_subsection("Protocol");
-    declare_quantity(prm,
-                     "Final relative density",
-                     "0.87",
-                     open(0.0, 1.0),
-                     "-",
-                     "In-die relative density at which compaction ends.");
+    input::declare_quantity(
+      prm,
+      "Final relative density",
+      "0.87",
+      input::open(0.0, 1.0),
+      "-",
+      "In-die relative density at which compaction ends.");
     prm.declare_entry("Compaction steps",
                       "30",
                       dealii::Patterns::Integer(1, 100000),
                       "Equal density steps from the packing's density to "
                       "the final density (load steps are cut back "
                       "automatically when needed), in [1, 100000].");
-    declare_quantity(prm,
-                     "Unloading points",
-                     "0.75, 0.79, 0.83, 0.87",
-                     dealii::Patterns::List(dealii::Patterns::Double(0, 1)),
-                     "-",
-                     "In-die relative densities rho_max at which an "
-                     "unloading branch starts from the compaction path "
-                     "(comma-separated, each in (0, 1), at most the final "
-                     "density; empty for none).");
-    declare_quantity(prm,
-                     "Unloading step",
-                     "2e-3",
-                     open(0.0, 0.5),
-                     "-",
-                     "Upper-punch withdrawal per unloading step as a "
-                     "fraction of the punch gap at the unloading point.");
+    input::declare_quantity(
+      prm,
+      "Unloading points",
+      "0.75, 0.79, 0.83, 0.87",
+      dealii::Patterns::List(dealii::Patterns::Double(0, 1)),
+      "-",
+      "In-die relative densities rho_max at which an "
+      "unloading branch starts from the compaction path "
+      "(comma-separated, each in (0, 1), at most the final "
+      "density; empty for none).");
+    input::declare_quantity(
+      prm,
+      "Unloading step",
+      "2e-3",
+      input::open(0.0, 0.5),
+      "-",
+      "Upper-punch withdrawal per unloading step as a "
+      "fraction of the punch gap at the unloading point.");
     prm.declare_entry("Minimum unloading steps",
                       "12",
                       dealii::Patterns::Integer(1, 100000),
@@ -199,20 +191,21 @@ namespace compax::coupling
                       dealii::Patterns::Bool(),
                       "Whether each unloaded compact is ejected (the die "
                       "wall is released in steps).");
-    declare_quantity(prm,
-                     "Die-wall friction coefficient",
-                     "1",
-                     non_negative(),
-                     "-",
-                     "Coulomb coefficient mu of the ejection pressure "
-                     "mu F_radial / A_punch (Gonzalez 2018, Sec. 5.4).");
-    declare_quantity(prm,
-                     "Ejection step",
-                     "2e-4",
-                     open(0.0, 0.1),
-                     "-",
-                     "Die-radius increase per ejection step, as a fraction "
-                     "of the die radius.");
+    input::declare_quantity(prm,
+                            "Die-wall friction coefficient",
+                            "1",
+                            input::non_negative(),
+                            "-",
+                            "Coulomb coefficient mu of the ejection pressure "
+                            "mu F_radial / A_punch (Gonzalez 2018, Sec. 5.4).");
+    input::declare_quantity(
+      prm,
+      "Ejection step",
+      "2e-4",
+      input::open(0.0, 0.1),
+      "-",
+      "Die-radius increase per ejection step, as a fraction "
+      "of the die radius.");
     prm.declare_entry("Rerun branch from",
                       "",
                       dealii::Patterns::Anything(),
@@ -345,7 +338,8 @@ namespace compax::coupling
   get_die_input(dealii::ParameterHandler &prm)
   {
     prm.enter_subsection("Packing");
-    std::vector<double> fractions = get_real_list(prm, "Material fractions");
+    std::vector<double> fractions
+      = input::get_real_list(prm, "Material fractions");
     prm.leave_subsection();
     {
       double sum = 0.0;
@@ -353,12 +347,12 @@ namespace compax::coupling
         sum += f;
       std::ostringstream list;
       for (std::size_t k = 0; k < fractions.size(); ++k)
-        list << (k ? ", " : "") << format_number(fractions[k]);
+        list << (k ? ", " : "") << input::format_number(fractions[k]);
       if (std::abs(sum - 1.0) > 1e-9)
-        reject_entry("Packing/Material fractions",
-                     list.str(),
-                     "the number fractions must sum to 1 (they sum to "
-                       + format_number(sum) + ")");
+        input::reject_entry("Packing/Material fractions",
+                            list.str(),
+                            "the number fractions must sum to 1 (they sum to "
+                              + input::format_number(sum) + ")");
     }
     const std::size_t n_materials = fractions.size();
 
@@ -376,11 +370,12 @@ namespace compax::coupling
         if (a == 0)
           radius = R;
         else if (R != radius)
-          reject_entry(name + "/Radius",
-                       format_number(R),
-                       "must equal Material/Radius = " + format_number(radius)
-                         + " m: the packing draws every radius from one "
-                           "size distribution");
+          input::reject_entry(name + "/Radius",
+                              input::format_number(R),
+                              "must equal Material/Radius = "
+                                + input::format_number(radius)
+                                + " m: the packing draws every radius from one "
+                                  "size distribution");
       }
 
     prm.enter_subsection("Bonding");
@@ -421,19 +416,21 @@ namespace compax::coupling
     if (n_materials > 1)
       deposition.material_fractions = fractions;
     if (deposition.die_diameter <= 4 * radius)
-      reject_entry("Packing/Die diameter",
-                   format_number(deposition.die_diameter),
-                   "the die must be wider than two particle diameters (> "
-                     + format_number(4 * radius) + " m)");
+      input::reject_entry(
+        "Packing/Die diameter",
+        input::format_number(deposition.die_diameter),
+        "the die must be wider than two particle diameters (> "
+          + input::format_number(4 * radius) + " m)");
     if (deposition.sizes.log_sigma > 0)
       {
         const auto  &sizes = deposition.sizes;
         const double sigma = sizes.log_sigma;
         if (sizes.min_radius >= sizes.max_radius)
-          reject_entry("Packing/Minimum radius",
-                       format_number(sizes.min_radius),
-                       "must be below the Maximum radius ("
-                         + format_number(sizes.max_radius) + " m)");
+          input::reject_entry("Packing/Minimum radius",
+                              input::format_number(sizes.min_radius),
+                              "must be below the Maximum radius ("
+                                + input::format_number(sizes.max_radius)
+                                + " m)");
         // The share of log-normal draws inside the cut-offs (rejection
         // sampling needs a reasonable one).
         const auto cdf = [&](const double r) {
@@ -444,24 +441,26 @@ namespace compax::coupling
         };
         const double accepted = cdf(sizes.max_radius) - cdf(sizes.min_radius);
         if (!(accepted >= 1e-3))
-          reject_entry("Packing/Minimum radius",
-                       format_number(sizes.min_radius),
-                       "the cut-offs [" + format_number(sizes.min_radius) + ", "
-                         + format_number(sizes.max_radius)
-                         + "] m keep only a fraction " + format_number(accepted)
-                         + " of the log-normal radii around the median "
-                         + format_number(radius) + " m (Log-normal sigma = "
-                         + format_number(sigma) + "); widen them");
+          input::reject_entry(
+            "Packing/Minimum radius",
+            input::format_number(sizes.min_radius),
+            "the cut-offs [" + input::format_number(sizes.min_radius) + ", "
+              + input::format_number(sizes.max_radius)
+              + "] m keep only a fraction " + input::format_number(accepted)
+              + " of the log-normal radii around the median "
+              + input::format_number(radius) + " m (Log-normal sigma = "
+              + input::format_number(sigma) + "); widen them");
         if (4.0 * sizes.largest() >= deposition.die_diameter)
-          reject_entry("Packing/Log-normal sigma",
-                       format_number(sigma),
-                       "the largest radius the packing may draw, min(Maximum "
-                       "radius, Radius exp(6 sigma)) = "
-                         + format_number(sizes.largest())
-                         + " m, must be below a quarter of the die diameter ("
-                         + format_number(deposition.die_diameter / 4)
-                         + " m): lower the sigma or set Packing/Maximum "
-                           "radius");
+          input::reject_entry(
+            "Packing/Log-normal sigma",
+            input::format_number(sigma),
+            "the largest radius the packing may draw, min(Maximum "
+            "radius, Radius exp(6 sigma)) = "
+              + input::format_number(sizes.largest())
+              + " m, must be below a quarter of the die diameter ("
+              + input::format_number(deposition.die_diameter / 4)
+              + " m): lower the sigma or set Packing/Maximum "
+                "radius");
       }
     prm.leave_subsection();
 
@@ -469,15 +468,16 @@ namespace compax::coupling
     dem::DieProtocol protocol;
     const double     final_density = prm.get_double("Final relative density");
     const int        steps         = prm.get_integer("Compaction steps");
-    protocol.unloading_points      = get_real_list(prm, "Unloading points");
-    const std::string rerun        = prm.get("Rerun branch from");
+    protocol.unloading_points = input::get_real_list(prm, "Unloading points");
+    const std::string rerun   = prm.get("Rerun branch from");
     for (const double u : protocol.unloading_points)
       if (rerun.empty() && (u <= 0.0 || u > final_density))
-        reject_entry("Protocol/Unloading points",
-                     format_number(u),
-                     "each unloading point must lie in (0, Final relative "
-                     "density = "
-                       + format_number(final_density) + "]");
+        input::reject_entry(
+          "Protocol/Unloading points",
+          input::format_number(u),
+          "each unloading point must lie in (0, Final relative "
+          "density = "
+            + input::format_number(final_density) + "]");
     protocol.unloading_step      = prm.get_double("Unloading step");
     protocol.min_unloading_steps = prm.get_integer("Minimum unloading steps");
     protocol.eject               = prm.get_bool("Eject");
@@ -492,9 +492,9 @@ namespace compax::coupling
     protocol.stop_after      = prm.get_integer("Stop after compaction steps");
     const std::string resume = prm.get("Resume from");
     if (!resume.empty() && !rerun.empty())
-      reject_entry("Protocol/Resume from",
-                   resume,
-                   "cannot be combined with Rerun branch from");
+      input::reject_entry("Protocol/Resume from",
+                          resume,
+                          "cannot be combined with Rerun branch from");
     prm.leave_subsection();
 
     prm.enter_subsection("Solver");
@@ -520,17 +520,17 @@ namespace compax::coupling
     // compared on their own, so the final density may be raised; a run
     // that stopped without convergence may resume with more iterations).
     const std::string resume_parameters
-      = canonical_parameters(prm,
-                             {},
-                             {"Protocol/Final relative density",
-                              "Protocol/Compaction steps",
-                              "Protocol/Unloading points",
-                              "Protocol/Rerun branch from",
-                              "Protocol/Checkpoint interval",
-                              "Protocol/Stop after compaction steps",
-                              "Protocol/Resume from",
-                              "Solver/Maximum iterations"});
-    const std::string state_parameters = canonical_parameters(
+      = input::canonical_parameters(prm,
+                                    {},
+                                    {"Protocol/Final relative density",
+                                     "Protocol/Compaction steps",
+                                     "Protocol/Unloading points",
+                                     "Protocol/Rerun branch from",
+                                     "Protocol/Checkpoint interval",
+                                     "Protocol/Stop after compaction steps",
+                                     "Protocol/Resume from",
+                                     "Solver/Maximum iterations"});
+    const std::string state_parameters = input::canonical_parameters(
       prm,
       with_registered_law_subsections(
         {"Material", "Material 2", "Bonding", "Packing", "Contact"}));
@@ -546,10 +546,10 @@ namespace compax::coupling
   reject_final_density(const dem::DieStudyOptions &study,
                        const double                packing_density)
   {
-    reject_entry("Protocol/Final relative density",
-                 format_number(study.final_density),
-                 "must exceed the packing's relative density "
-                   + format_number(packing_density));
+    input::reject_entry("Protocol/Final relative density",
+                        input::format_number(study.final_density),
+                        "must exceed the packing's relative density "
+                          + input::format_number(packing_density));
   }
 
   void

@@ -7,38 +7,27 @@
 
 namespace compax::coupling
 {
-  using input::closed;
-  using input::declare_quantity;
-  using input::format_number;
-  using input::get_real_list;
-  using input::InputError;
-  using input::non_negative;
-  using input::open;
-  using input::positive;
-  using input::RealInterval;
-  using input::reject_entry;
-  using input::resolve_input_path;
-
   void
   declare_equilibrium_tolerances(dealii::ParameterHandler &prm,
                                  const std::string        &force_floor_note)
   {
-    declare_quantity(prm,
-                     "Force tolerance",
-                     "1e-6",
-                     open(0.0, 1.0),
-                     "-",
-                     "Converged when the largest net force on a particle is "
-                     "below this times the mean contact force."
-                       + (force_floor_note.empty() ? std::string()
-                                                   : " " + force_floor_note));
-    declare_quantity(prm,
-                     "Step tolerance",
-                     "1e-4",
-                     open(0.0, 1.0),
-                     "-",
-                     "... and the largest particle displacement of the last "
-                     "Newton step is below this times the mean radius.");
+    input::declare_quantity(
+      prm,
+      "Force tolerance",
+      "1e-6",
+      input::open(0.0, 1.0),
+      "-",
+      "Converged when the largest net force on a particle is "
+      "below this times the mean contact force."
+        + (force_floor_note.empty() ? std::string() : " " + force_floor_note));
+    input::declare_quantity(
+      prm,
+      "Step tolerance",
+      "1e-4",
+      input::open(0.0, 1.0),
+      "-",
+      "... and the largest particle displacement of the last "
+      "Newton step is below this times the mean radius.");
     prm.declare_entry("Maximum iterations",
                       "200",
                       dealii::Patterns::Integer(1, 1000000),

@@ -9,62 +9,53 @@
 
 namespace compax::coupling
 {
-  using input::closed;
-  using input::declare_quantity;
-  using input::format_number;
-  using input::get_real_list;
-  using input::InputError;
-  using input::non_negative;
-  using input::open;
-  using input::positive;
-  using input::RealInterval;
-  using input::reject_entry;
-  using input::resolve_input_path;
-
   void
   declare_particle_material(dealii::ParameterHandler &prm,
                             const ParticleDefaults   &defaults)
   {
-    declare_quantity(prm,
-                     "Radius",
-                     format_number(defaults.radius),
-                     positive(),
-                     "m",
-                     "Particle radius R.");
-    declare_quantity(prm,
-                     "Young's modulus",
-                     format_number(defaults.youngs_modulus),
-                     positive(),
-                     "Pa",
-                     "Young's modulus E of the particle material.");
-    declare_quantity(prm,
-                     "Poisson's ratio",
-                     format_number(defaults.poisson_ratio),
-                     open(-1.0, 0.5),
-                     "-",
-                     "Poisson's ratio nu, in (-1, 0.5).");
-    declare_quantity(prm,
-                     "Plastic stiffness",
-                     format_number(defaults.plastic_stiffness),
-                     positive(),
-                     "Pa",
-                     "Plastic stiffness kappa of the power-law hardening "
-                     "sigma = kappa epsilon^(1/m) (Gonzalez 2018, Sec. 2).");
-    declare_quantity(prm,
-                     "Plastic exponent",
-                     format_number(defaults.plastic_exponent),
-                     RealInterval(1.0, false, 1e3, false),
-                     "-",
-                     "Plastic law exponent m >= 1 (m = 1: linear hardening; "
-                     "large m: perfectly plastic).");
-    declare_quantity(prm,
-                     "Surface energy",
-                     format_number(defaults.surface_energy),
-                     non_negative(),
-                     "J/m^2",
-                     "Interfacial fracture energy omega of the material, "
-                     "used when the fracture toughness is computed from "
-                     "energies (Gonzalez 2018, formula after Eq. 5).");
+    input::declare_quantity(prm,
+                            "Radius",
+                            input::format_number(defaults.radius),
+                            input::positive(),
+                            "m",
+                            "Particle radius R.");
+    input::declare_quantity(prm,
+                            "Young's modulus",
+                            input::format_number(defaults.youngs_modulus),
+                            input::positive(),
+                            "Pa",
+                            "Young's modulus E of the particle material.");
+    input::declare_quantity(prm,
+                            "Poisson's ratio",
+                            input::format_number(defaults.poisson_ratio),
+                            input::open(-1.0, 0.5),
+                            "-",
+                            "Poisson's ratio nu, in (-1, 0.5).");
+    input::declare_quantity(
+      prm,
+      "Plastic stiffness",
+      input::format_number(defaults.plastic_stiffness),
+      input::positive(),
+      "Pa",
+      "Plastic stiffness kappa of the power-law hardening "
+      "sigma = kappa epsilon^(1/m) (Gonzalez 2018, Sec. 2).");
+    input::declare_quantity(
+      prm,
+      "Plastic exponent",
+      input::format_number(defaults.plastic_exponent),
+      input::RealInterval(1.0, false, 1e3, false),
+      "-",
+      "Plastic law exponent m >= 1 (m = 1: linear hardening; "
+      "large m: perfectly plastic).");
+    input::declare_quantity(
+      prm,
+      "Surface energy",
+      input::format_number(defaults.surface_energy),
+      input::non_negative(),
+      "J/m^2",
+      "Interfacial fracture energy omega of the material, "
+      "used when the fracture toughness is computed from "
+      "energies (Gonzalez 2018, formula after Eq. 5).");
   }
 
   dem::ElastoplasticMaterial

@@ -7,18 +7,6 @@
 
 namespace compax::coupling
 {
-  using input::closed;
-  using input::declare_quantity;
-  using input::format_number;
-  using input::get_real_list;
-  using input::InputError;
-  using input::non_negative;
-  using input::open;
-  using input::positive;
-  using input::RealInterval;
-  using input::reject_entry;
-  using input::resolve_input_path;
-
   namespace
   {
     bool
@@ -37,11 +25,11 @@ namespace compax::coupling
           continue;
         prm.enter_subsection(law.subsection);
         for (const dem::LawParameter &p : law.parameters)
-          declare_quantity(
+          input::declare_quantity(
             prm,
             p.name,
-            format_number(p.default_value),
-            RealInterval(p.lower, p.lower_open, p.upper, p.upper_open),
+            input::format_number(p.default_value),
+            input::RealInterval(p.lower, p.lower_open, p.upper, p.upper_open),
             p.unit,
             p.documentation);
         prm.leave_subsection();

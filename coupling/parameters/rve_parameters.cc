@@ -22,19 +22,6 @@
 
 namespace compax::coupling
 {
-  using input::closed;
-  using input::declare_quantity;
-  using input::format_number;
-  using input::get_real_list;
-  using input::InputError;
-  using input::non_negative;
-  using input::open;
-  using input::positive;
-  using input::RealInterval;
-  using input::reject_entry;
-  using input::resolve_input_path;
-
-  using input::canonical_parameters;
 
   namespace
   {
@@ -74,13 +61,14 @@ namespace compax::coupling
           = L0 * std::cbrt(s.packing.relative_density / s.target_density);
       const double needed = 2.0 * R_max + skin;
       if (narrowest < needed)
-        reject_entry(entry,
-                     std::to_string(n),
-                     "too few particles: the cell would be "
-                       + format_number(narrowest)
-                       + " m wide along the path, below the largest diameter "
-                         "plus the Verlet skin ("
-                       + format_number(needed) + " m)");
+        input::reject_entry(
+          entry,
+          std::to_string(n),
+          "too few particles: the cell would be "
+            + input::format_number(narrowest)
+            + " m wide along the path, below the largest diameter "
+              "plus the Verlet skin ("
+            + input::format_number(needed) + " m)");
     }
   } // namespace
 
@@ -141,10 +129,10 @@ namespace compax::coupling
       }
     catch (const io::CsvError &e)
       {
-        reject_entry(entry, file, e.reason());
+        input::reject_entry(entry, file, e.reason());
       }
     if (increments.empty())
-      reject_entry(entry, file, "the file has no strain increments");
+      input::reject_entry(entry, file, "the file has no strain increments");
     return increments;
   }
 
@@ -158,27 +146,28 @@ namespace compax::coupling
                       "true: K_Ic = sqrt(2 (2 omega + G_p) E) from the "
                       "Material's surface energy omega (Gonzalez 2018 after "
                       "Eq. 5); false: the Fracture toughness entry.");
-    declare_quantity(prm,
-                     "Fracture toughness",
-                     "1.26e6",
-                     non_negative(),
-                     "Pa m^1/2",
-                     "Fracture toughness K_Ic of the solid bridges between "
-                     "particles (Material 1 of Gonzalez 2018, Table 1); 0 "
-                     "for no bonding.");
-    declare_quantity(prm,
-                     "Plastic dissipation",
-                     "0",
-                     non_negative(),
-                     "J/m^2",
-                     "G_p added to the surface energies when K_Ic is "
-                     "computed from energies.");
-    declare_quantity(prm,
-                     "Regularization parameter",
-                     "0.01",
-                     positive(),
-                     "-",
-                     "xi_B of the regularized law, Eq. (4).");
+    input::declare_quantity(
+      prm,
+      "Fracture toughness",
+      "1.26e6",
+      input::non_negative(),
+      "Pa m^1/2",
+      "Fracture toughness K_Ic of the solid bridges between "
+      "particles (Material 1 of Gonzalez 2018, Table 1); 0 "
+      "for no bonding.");
+    input::declare_quantity(prm,
+                            "Plastic dissipation",
+                            "0",
+                            input::non_negative(),
+                            "J/m^2",
+                            "G_p added to the surface energies when K_Ic is "
+                            "computed from energies.");
+    input::declare_quantity(prm,
+                            "Regularization parameter",
+                            "0.01",
+                            input::positive(),
+                            "-",
+                            "xi_B of the regularized law, Eq. (4).");
     prm.leave_subsection();
   }
 
@@ -207,48 +196,58 @@ namespace compax::coupling
                       "a log-normal fitted to the volume quantiles x10, x50, "
                       "x90 (Giannis 2021 Table 1), sampled by number "
                       "(Hatch-Choate) between the diameter cut-offs.");
-    declare_quantity(prm,
-                     "Log-normal sigma",
-                     "0.1",
-                     non_negative(),
-                     "-",
-                     "Standard deviation of ln R (Size distribution = "
-                     "log-normal).");
-    declare_quantity(prm,
-                     "Minimum radius",
-                     "0",
-                     non_negative(),
-                     "m",
-                     "Lower cut-off of the log-normal radii.");
-    declare_quantity(prm,
-                     "Maximum radius",
-                     "1",
-                     positive(),
-                     "m",
-                     "Upper cut-off of the log-normal radii.");
-    declare_quantity(prm,
-                     "x10",
-                     "360e-6",
-                     positive(),
-                     "m",
-                     "Volume (Q3) 10% diameter (Size distribution = "
-                     "quantiles).");
-    declare_quantity(
-      prm, "x50", "440e-6", positive(), "m", "Volume (Q3) median diameter.");
-    declare_quantity(
-      prm, "x90", "540e-6", positive(), "m", "Volume (Q3) 90% diameter.");
-    declare_quantity(prm,
-                     "Minimum diameter",
-                     "300e-6",
-                     non_negative(),
-                     "m",
-                     "Lower cut-off of the sampled diameters (quantiles).");
-    declare_quantity(prm,
-                     "Maximum diameter",
-                     "600e-6",
-                     positive(),
-                     "m",
-                     "Upper cut-off of the sampled diameters (quantiles).");
+    input::declare_quantity(prm,
+                            "Log-normal sigma",
+                            "0.1",
+                            input::non_negative(),
+                            "-",
+                            "Standard deviation of ln R (Size distribution = "
+                            "log-normal).");
+    input::declare_quantity(prm,
+                            "Minimum radius",
+                            "0",
+                            input::non_negative(),
+                            "m",
+                            "Lower cut-off of the log-normal radii.");
+    input::declare_quantity(prm,
+                            "Maximum radius",
+                            "1",
+                            input::positive(),
+                            "m",
+                            "Upper cut-off of the log-normal radii.");
+    input::declare_quantity(prm,
+                            "x10",
+                            "360e-6",
+                            input::positive(),
+                            "m",
+                            "Volume (Q3) 10% diameter (Size distribution = "
+                            "quantiles).");
+    input::declare_quantity(prm,
+                            "x50",
+                            "440e-6",
+                            input::positive(),
+                            "m",
+                            "Volume (Q3) median diameter.");
+    input::declare_quantity(prm,
+                            "x90",
+                            "540e-6",
+                            input::positive(),
+                            "m",
+                            "Volume (Q3) 90% diameter.");
+    input::declare_quantity(
+      prm,
+      "Minimum diameter",
+      "300e-6",
+      input::non_negative(),
+      "m",
+      "Lower cut-off of the sampled diameters (quantiles).");
+    input::declare_quantity(
+      prm,
+      "Maximum diameter",
+      "600e-6",
+      input::positive(),
+      "m",
+      "Upper cut-off of the sampled diameters (quantiles).");
     prm.declare_entry(
       "Protocol",
       protocol,
@@ -272,30 +271,33 @@ namespace compax::coupling
       "small deposited cell can give compax database a degenerate cap fit "
       "(40 spheres: negative Poisson's ratio and zero cap pressure; 200 "
       "spheres, the default, fit).");
-    declare_quantity(prm,
-                     "Initial relative density",
-                     "0.55",
-                     open(0.0, 0.74),
-                     "-",
-                     "Solid fraction of the packing the path starts from. "
-                     "Protocol = deposited: at least the deposit's own "
-                     "density rho_dep (see Protocol); compressed-gas: any "
-                     "(above ~0.64 the gas packing is already loaded).");
-    declare_quantity(prm,
-                     "Insertion density",
-                     "0.25",
-                     open(0.0, 0.38),
-                     "-",
-                     "Solid fraction at which the spheres are inserted at "
-                     "random before the gas is compressed (Protocol = "
-                     "compressed-gas).");
-    declare_quantity(prm,
-                     "Verlet skin",
-                     "0.3",
-                     open(0.0, 2.0),
-                     "-",
-                     "Verlet skin of the contact list as a fraction of the "
-                     "median radius.");
+    input::declare_quantity(
+      prm,
+      "Initial relative density",
+      "0.55",
+      input::open(0.0, 0.74),
+      "-",
+      "Solid fraction of the packing the path starts from. "
+      "Protocol = deposited: at least the deposit's own "
+      "density rho_dep (see Protocol); compressed-gas: any "
+      "(above ~0.64 the gas packing is already loaded).");
+    input::declare_quantity(
+      prm,
+      "Insertion density",
+      "0.25",
+      input::open(0.0, 0.38),
+      "-",
+      "Solid fraction at which the spheres are inserted at "
+      "random before the gas is compressed (Protocol = "
+      "compressed-gas).");
+    input::declare_quantity(
+      prm,
+      "Verlet skin",
+      "0.3",
+      input::open(0.0, 2.0),
+      "-",
+      "Verlet skin of the contact list as a fraction of the "
+      "median radius.");
     prm.declare_entry("Seed",
                       "1",
                       dealii::Patterns::Integer(0),
@@ -310,15 +312,16 @@ namespace compax::coupling
   {
     prm.enter_subsection("Solver");
     coupling::declare_equilibrium_tolerances(prm);
-    declare_quantity(prm,
-                     "Jamming pressure",
-                     "0.5e6",
-                     non_negative(),
-                     "Pa",
-                     "Below this mean compressive stress -tr(sigma)/3 a step "
-                     "is relaxed by FIRE (the loose cell has no stiffness for "
-                     "Newton), as Consolidation says; 0: every step by "
-                     "Newton.");
+    input::declare_quantity(
+      prm,
+      "Jamming pressure",
+      "0.5e6",
+      input::non_negative(),
+      "Pa",
+      "Below this mean compressive stress -tr(sigma)/3 a step "
+      "is relaxed by FIRE (the loose cell has no stiffness for "
+      "Newton), as Consolidation says; 0: every step by "
+      "Newton.");
     prm.declare_entry(
       "Consolidation",
       consolidation,
@@ -366,13 +369,14 @@ namespace compax::coupling
                       "compaction along z in equal density steps; "
                       "hydrostatic: F = (rho_0/rho)^(1/3) I; csv: F <- (I + "
                       "eps) F for each row of the Strain increments file.");
-    declare_quantity(prm,
-                     "Target relative density",
-                     "0.8",
-                     open(0.0, 1.0),
-                     "-",
-                     "Relative density at the end of loading (uniaxial, "
-                     "hydrostatic); above the Initial relative density.");
+    input::declare_quantity(
+      prm,
+      "Target relative density",
+      "0.8",
+      input::open(0.0, 1.0),
+      "-",
+      "Relative density at the end of loading (uniaxial, "
+      "hydrostatic); above the Initial relative density.");
     prm.declare_entry("Loading steps",
                       "25",
                       dealii::Patterns::Integer(1, 100000),
@@ -386,13 +390,13 @@ namespace compax::coupling
                       "until the axial stress sigma_zz, hydrostatic until the "
                       "mean stress vanishes; csv: the increments undone in "
                       "reverse order until the mean stress vanishes.");
-    declare_quantity(prm,
-                     "Unloading strain step",
-                     "5e-4",
-                     open(0.0, 0.1),
-                     "-",
-                     "Logarithmic strain per unloading step (eps_zz for "
-                     "uniaxial, each normal strain for hydrostatic).");
+    input::declare_quantity(prm,
+                            "Unloading strain step",
+                            "5e-4",
+                            input::open(0.0, 0.1),
+                            "-",
+                            "Logarithmic strain per unloading step (eps_zz for "
+                            "uniaxial, each normal strain for hydrostatic).");
     prm.declare_entry("Maximum unloading steps",
                       "500",
                       dealii::Patterns::Integer(1, 100000),
@@ -428,24 +432,26 @@ namespace compax::coupling
                       "loading contact on the kink between its plastic and "
                       "unloading branches, where a central difference "
                       "approximates neither. 0: never.");
-    declare_quantity(prm,
-                     "Finite-difference strain step",
-                     "1e-8",
-                     open(0.0, 1e-2),
-                     "-",
-                     "Strain perturbation h of the finite-difference tangent "
-                     "(small: a contact crossing a kink of its law within +-h "
-                     "spoils a central difference; 1e-6 gives ~5e-4 error "
-                     "on the default case, 1e-8 ~3e-7) "
-                     "(engineering shears).");
-    declare_quantity(prm,
-                     "Finite-difference force tolerance",
-                     "1e-10",
-                     open(0.0, 1.0),
-                     "-",
-                     "Equilibrium force (and step) tolerance of the "
-                     "finite-difference solves; the stress error it leaves "
-                     "is divided by h.");
+    input::declare_quantity(
+      prm,
+      "Finite-difference strain step",
+      "1e-8",
+      input::open(0.0, 1e-2),
+      "-",
+      "Strain perturbation h of the finite-difference tangent "
+      "(small: a contact crossing a kink of its law within +-h "
+      "spoils a central difference; 1e-6 gives ~5e-4 error "
+      "on the default case, 1e-8 ~3e-7) "
+      "(engineering shears).");
+    input::declare_quantity(
+      prm,
+      "Finite-difference force tolerance",
+      "1e-10",
+      input::open(0.0, 1.0),
+      "-",
+      "Equilibrium force (and step) tolerance of the "
+      "finite-difference solves; the stress error it leaves "
+      "is divided by h.");
     prm.declare_entry("Snapshot interval",
                       "5",
                       dealii::Patterns::Integer(0, 100000),
@@ -556,7 +562,7 @@ namespace compax::coupling
       {
         s.packing.sizes.median_radius = radius;
         s.size_description
-          = "monodisperse, R = " + format_number(radius) + " m";
+          = "monodisperse, R = " + input::format_number(radius) + " m";
       }
     else if (distribution == "log-normal")
       {
@@ -566,16 +572,18 @@ namespace compax::coupling
         d.min_radius    = prm.get_double("Minimum radius");
         d.max_radius    = prm.get_double("Maximum radius");
         if (!(d.min_radius < d.max_radius))
-          reject_entry("Packing/Minimum radius",
-                       format_number(d.min_radius),
-                       "must be below the Maximum radius ("
-                         + format_number(d.max_radius) + " m)");
+          input::reject_entry("Packing/Minimum radius",
+                              input::format_number(d.min_radius),
+                              "must be below the Maximum radius ("
+                                + input::format_number(d.max_radius) + " m)");
         if (!(d.min_radius <= radius && radius <= d.max_radius))
-          reject_entry("Material/Radius",
-                       format_number(radius),
-                       "the median radius must lie between the cut-offs");
-        s.size_description = "log-normal, median R = " + format_number(radius)
-                             + " m, sigma = " + format_number(d.log_sigma);
+          input::reject_entry(
+            "Material/Radius",
+            input::format_number(radius),
+            "the median radius must lie between the cut-offs");
+        s.size_description
+          = "log-normal, median R = " + input::format_number(radius)
+            + " m, sigma = " + input::format_number(d.log_sigma);
       }
     else
       {
@@ -584,26 +592,26 @@ namespace compax::coupling
         const double d_min = prm.get_double("Minimum diameter"),
                      d_max = prm.get_double("Maximum diameter");
         if (!(x10 < x50 && x50 < x90))
-          reject_entry("Packing/x50",
-                       format_number(x50),
-                       "need x10 < x50 < x90");
+          input::reject_entry("Packing/x50",
+                              input::format_number(x50),
+                              "need x10 < x50 < x90");
         if (!(d_min < d_max))
-          reject_entry("Packing/Maximum diameter",
-                       format_number(d_max),
-                       "must exceed the Minimum diameter "
-                         + format_number(d_min));
+          input::reject_entry("Packing/Maximum diameter",
+                              input::format_number(d_max),
+                              "must exceed the Minimum diameter "
+                                + input::format_number(d_min));
         const auto fit  = dem::fit_volume_log_normal(x10, x50, x90);
         s.packing.sizes = dem::number_radius_distribution(fit, d_min, d_max);
         const double median = s.packing.sizes.median_radius;
         if (!(0.5 * d_min <= median && median <= 0.5 * d_max))
-          reject_entry("Packing/Minimum diameter",
-                       format_number(d_min),
-                       "the fitted number median diameter "
-                         + format_number(2 * median)
-                         + " m lies outside the cut-offs");
-        s.size_description
-          = "fitted to x10/x50/x90, number median R = " + format_number(median)
-            + " m, sigma = " + format_number(fit.log_sigma);
+          input::reject_entry("Packing/Minimum diameter",
+                              input::format_number(d_min),
+                              "the fitted number median diameter "
+                                + input::format_number(2 * median)
+                                + " m lies outside the cut-offs");
+        s.size_description = "fitted to x10/x50/x90, number median R = "
+                             + input::format_number(median) + " m, sigma = "
+                             + input::format_number(fit.log_sigma);
       }
     prm.leave_subsection();
     return s;
@@ -614,15 +622,16 @@ namespace compax::coupling
                          const double                    deposit,
                          const std::string              &prefix)
   {
-    reject_entry(prefix + "Packing/Initial relative density",
-                 format_number(packing.relative_density),
-                 "lies below the relative density of the deposited cell ("
-                   + format_number(deposit) + " for these particles and seed "
-                   + std::to_string(packing.seed)
-                   + "), which Packing/Protocol = deposited can only compact: "
-                     "allowed ["
-                   + format_number(deposit)
-                   + ", 0.74), or Packing/Protocol = compressed-gas");
+    input::reject_entry(
+      prefix + "Packing/Initial relative density",
+      input::format_number(packing.relative_density),
+      "lies below the relative density of the deposited cell ("
+        + input::format_number(deposit) + " for these particles and seed "
+        + std::to_string(packing.seed)
+        + "), which Packing/Protocol = deposited can only compact: "
+          "allowed ["
+        + input::format_number(deposit)
+        + ", 0.74), or Packing/Protocol = compressed-gas");
   }
 
   void
@@ -680,19 +689,20 @@ namespace compax::coupling
     prm.leave_subsection();
     if (s.path != RvePath::increments
         && s.target_density <= s.packing.relative_density)
-      reject_entry("Strain path/Target relative density",
-                   format_number(s.target_density),
-                   "must exceed Packing/Initial relative density = "
-                     + format_number(s.packing.relative_density));
+      input::reject_entry("Strain path/Target relative density",
+                          input::format_number(s.target_density),
+                          "must exceed Packing/Initial relative density = "
+                            + input::format_number(s.packing.relative_density));
     if (s.path == RvePath::increments)
       {
         if (s.csv_file.empty())
-          reject_entry("Strain path/Strain increments file",
-                       "(empty)",
-                       "Path = csv needs a CSV file of strain increments");
-        s.increments
-          = read_strain_increments(resolve_input_path(s.csv_file).string(),
-                                   "Strain path/Strain increments file");
+          input::reject_entry(
+            "Strain path/Strain increments file",
+            "(empty)",
+            "Path = csv needs a CSV file of strain increments");
+        s.increments = read_strain_increments(
+          input::resolve_input_path(s.csv_file).string(),
+          "Strain path/Strain increments file");
         s.steps = static_cast<int>(s.increments.size());
       }
 
@@ -712,28 +722,30 @@ namespace compax::coupling
         static_cast<std::size_t>(dealii::Utilities::string_to_int(item)));
     prm.leave_subsection();
     if (s.cell_sizes.size() == 1)
-      reject_entry("Size study/Cell sizes",
-                   std::to_string(s.cell_sizes.front()),
-                   "a size study needs at least two cell sizes (leave it "
-                   "empty for one run)");
+      input::reject_entry(
+        "Size study/Cell sizes",
+        std::to_string(s.cell_sizes.front()),
+        "a size study needs at least two cell sizes (leave it "
+        "empty for one run)");
 
     prm.enter_subsection("Checkpoints");
     s.checkpoint_interval = prm.get_integer("Checkpoint interval");
     s.stop_after          = prm.get_integer("Stop after steps");
     s.resume_from         = prm.get("Resume from");
     if (!s.resume_from.empty())
-      s.resume_from = resolve_input_path(s.resume_from).string();
+      s.resume_from = input::resolve_input_path(s.resume_from).string();
     prm.leave_subsection();
-    s.resume_parameters = canonical_parameters(
+    s.resume_parameters = input::canonical_parameters(
       prm,
       {},
       {"Checkpoints", "Size study", "Solver/Maximum iterations"},
       {"Strain path/Strain increments file"});
     if (!s.cell_sizes.empty() && (!s.resume_from.empty() || s.stop_after > 0))
-      reject_entry("Size study/Cell sizes",
-                   cell_sizes,
-                   "a size study cannot be stopped or resumed (leave "
-                   "Checkpoints/Resume from empty and Stop after steps 0)");
+      input::reject_entry(
+        "Size study/Cell sizes",
+        cell_sizes,
+        "a size study cannot be stopped or resumed (leave "
+        "Checkpoints/Resume from empty and Stop after steps 0)");
 
     s.loading = get_rve_loading_options(prm);
 
