@@ -59,5 +59,7 @@ TEST(TwoMaterialBed, DiscrepanciesAreRelativeToHertzAtCommonDensities)
   // The same result against itself differs by nothing.
   for (const auto &r : dem::formulation_discrepancies(hertz, hertz))
     if (r.load_discrepancy)
-      EXPECT_EQ(*r.load_discrepancy, 0.0);
+      {
+        EXPECT_EQ(*r.load_discrepancy, 0.0);
+      }
 }

@@ -184,8 +184,10 @@ TEST(ContactLawRegistry, EveryLawBuildsFromItsOwnDefaultsUnderItsName)
       EXPECT_EQ(find_contact_law(entry.name), &entry);
       // A context, where a law declares one, is a function of the overlap.
       if (entry.context)
-        EXPECT_TRUE(
-          std::isfinite(entry.context(defaults, wall)(1e-7).nonlocal_overlap));
+        {
+          EXPECT_TRUE(std::isfinite(
+            entry.context(defaults, wall)(1e-7).nonlocal_overlap));
+        }
     }
   EXPECT_EQ(find_contact_law("no-such-law"), nullptr);
 
