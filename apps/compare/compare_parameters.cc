@@ -109,7 +109,8 @@ namespace compax::cli
     coupling::declare_particle_material(prm, coupling::material_1);
     prm.leave_subsection();
 
-    coupling::declare_rve_bonding_parameters(prm);
+    coupling::declare_bonding_parameters(prm,
+                                         coupling::BondedBodies::one_species);
 
     prm.enter_subsection("Die");
     declare_quantity(prm,

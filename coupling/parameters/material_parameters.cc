@@ -6,9 +6,77 @@
 #include "input/real_interval.h"
 
 #include <sstream>
+#include <string>
 
 namespace compax::coupling
 {
+  void
+  declare_bonding_parameters(dealii::ParameterHandler &prm,
+                             const BondedBodies        bodies)
+  {
+    const bool die = bodies == BondedBodies::species_and_walls;
+    prm.enter_subsection("Bonding");
+    prm.declare_entry("Fracture toughness from energies",
+                      "false",
+                      dealii::Patterns::Bool(),
+                      "true: K_Ic = sqrt(2 (2 omega + G_p) E) from the "
+                      "Material's surface energy omega (Gonzalez 2018 after "
+                      "Eq. 5); false: the Fracture toughness entry.");
+    input::declare_quantity(
+      prm,
+      "Fracture toughness",
+      "1.26e6",
+      input::non_negative(),
+      "Pa m^1/2",
+      std::string("Fracture toughness K_Ic of the solid bridges between "
+                  "particles (Material 1 of Gonzalez 2018, Table 1); 0 "
+                  "for no bonding.")
+        + (die ? " With two materials: between two particles of Material."
+               : ""));
+    if (die)
+      {
+        input::declare_quantity(
+          prm,
+          "Fracture toughness 2",
+          "6.19e6",
+          input::non_negative(),
+          "Pa m^1/2",
+          "K_Ic of bridges between two particles of Material 2 "
+          "(used with two materials; Material 2 of Gonzalez 2018, "
+          "Table 1).");
+        input::declare_quantity(
+          prm,
+          "Cross fracture toughness",
+          "2.62e6",
+          input::non_negative(),
+          "Pa m^1/2",
+          "K_Ic of bridges between a particle of Material and one "
+          "of Material 2 (used with two materials). The default is "
+          "the formula after Gonzalez 2018 Eq. 5 with the surface "
+          "energies of Materials 1 and 2 of Table 1.");
+      }
+    input::declare_quantity(prm,
+                            "Plastic dissipation",
+                            "0",
+                            input::non_negative(),
+                            "J/m^2",
+                            "G_p added to the surface energies when K_Ic is "
+                            "computed from energies.");
+    input::declare_quantity(prm,
+                            "Regularization parameter",
+                            "0.01",
+                            input::positive(),
+                            "-",
+                            "xi_B of the regularized law, Eq. (4).");
+    if (die)
+      prm.declare_entry("Bridges with walls",
+                        "false",
+                        dealii::Patterns::Bool(),
+                        "Whether solid bridges form between particles and "
+                        "the punches or die wall (same K_Ic).");
+    prm.leave_subsection();
+  }
+
   void
   declare_particle_material(dealii::ParameterHandler &prm,
                             const ParticleDefaults   &defaults)

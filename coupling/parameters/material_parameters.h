@@ -29,6 +29,26 @@ namespace compax::coupling
   declare_particle_material(dealii::ParameterHandler &prm,
                             const ParticleDefaults   &defaults = material_1);
 
+  /// Which bodies a study's solid bridges join.
+  enum class BondedBodies
+  {
+    /// One species in a periodic cell (no walls).
+    one_species,
+    /// Two species in a die: adds Fracture toughness 2, Cross fracture
+    /// toughness and Bridges with walls.
+    species_and_walls
+  };
+
+  /**
+   * Declares the subsection Bonding (Gonzalez 2018 Eqs. 4-5): Fracture
+   * toughness from energies, Fracture toughness, Plastic dissipation,
+   * Regularization parameter, and for @p bodies = species_and_walls the
+   * second species' and the cross toughness and the bridges with walls.
+   */
+  void
+  declare_bonding_parameters(dealii::ParameterHandler &prm,
+                             BondedBodies              bodies);
+
   /// Reads the entries declared by declare_particle_material().
   dem::ElastoplasticMaterial
   get_particle_material(dealii::ParameterHandler &prm);

@@ -137,41 +137,6 @@ namespace compax::coupling
   }
 
   void
-  declare_rve_bonding_parameters(dealii::ParameterHandler &prm)
-  {
-    prm.enter_subsection("Bonding");
-    prm.declare_entry("Fracture toughness from energies",
-                      "false",
-                      dealii::Patterns::Bool(),
-                      "true: K_Ic = sqrt(2 (2 omega + G_p) E) from the "
-                      "Material's surface energy omega (Gonzalez 2018 after "
-                      "Eq. 5); false: the Fracture toughness entry.");
-    input::declare_quantity(
-      prm,
-      "Fracture toughness",
-      "1.26e6",
-      input::non_negative(),
-      "Pa m^1/2",
-      "Fracture toughness K_Ic of the solid bridges between "
-      "particles (Material 1 of Gonzalez 2018, Table 1); 0 "
-      "for no bonding.");
-    input::declare_quantity(prm,
-                            "Plastic dissipation",
-                            "0",
-                            input::non_negative(),
-                            "J/m^2",
-                            "G_p added to the surface energies when K_Ic is "
-                            "computed from energies.");
-    input::declare_quantity(prm,
-                            "Regularization parameter",
-                            "0.01",
-                            input::positive(),
-                            "-",
-                            "xi_B of the regularized law, Eq. (4).");
-    prm.leave_subsection();
-  }
-
-  void
   declare_rve_cell_parameters(dealii::ParameterHandler &prm,
                               const std::string        &protocol)
   {
@@ -179,7 +144,7 @@ namespace compax::coupling
     coupling::declare_particle_material(prm, coupling::material_1);
     prm.leave_subsection();
 
-    declare_rve_bonding_parameters(prm);
+    declare_bonding_parameters(prm, BondedBodies::one_species);
 
     prm.enter_subsection("Packing");
     prm.declare_entry("Number of particles",

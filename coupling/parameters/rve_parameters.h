@@ -62,13 +62,6 @@ namespace compax::coupling
     std::string size_description;
   };
 
-  /// Declares the subsection Bonding of a cell: Fracture toughness from
-  /// energies, Fracture toughness, Plastic dissipation, Regularization
-  /// parameter (shared by `compax rve`, `compax database` and `compax
-  /// compare`).
-  void
-  declare_rve_bonding_parameters(dealii::ParameterHandler &prm);
-
   /// Declares the subsections Material, Bonding and Packing of a cell
   /// (shared by `compax rve` and `compax database`), Packing/Protocol with
   /// the default `protocol` (deposited or compressed-gas).
