@@ -72,7 +72,7 @@ namespace compax::dem
     /// elasto-plastic law: Hertz, or the nonlocal contact formulation of
     /// Gonzalez & Cuitino 2012 (elastic->nonlocal), stepped by an
     /// ElasticDieStepper (consolidation by FIRE with Hertz contacts, then
-    /// NonlocalTrustRegion). No bonds: bonding surface and bonds are 0, the
+    /// TrustRegionNewton with nonlocal_equilibrium_options()). No bonds: bonding surface and bonds are 0, the
     /// coordination number counts the loaded particle pairs. Empty: the
     /// ContactModel's law (LoadStepper, TrustRegionNewton).
     std::optional<ElasticDieOptions> elastic;

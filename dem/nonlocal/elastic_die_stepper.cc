@@ -71,7 +71,7 @@ namespace compax::dem
     double relative  = 0.0;
     if (s.n_loaded > 0)
       {
-        const NonlocalTrustRegionResult r = solver.solve(system);
+        const EquilibriumResult r = solver.solve(system);
         total.iterations += r.iterations + r.krylov_iterations;
         total.cg_iterations += r.cg_iterations;
         total.fire_iterations += r.fire_iterations;

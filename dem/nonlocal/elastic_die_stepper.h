@@ -1,10 +1,10 @@
 #pragma once
 
 #include "dem/nonlocal/nonlocal_bed_system.h"
-#include "dem/nonlocal/nonlocal_trust_region.h"
 #include "dem/solver/consolidation.h"
 #include "dem/solver/load_stepper.h"
 #include "dem/solver/substepping.h"
+#include "dem/solver/trust_region_newton.h"
 
 #include <vector>
 
@@ -18,9 +18,9 @@ namespace compax::dem
     /// Nonlocal formulation (Gonzalez & Cuitino 2012); false: Hertz.
     bool nonlocal = true;
     /// Candidate skin, Algorithm 1 tolerances (bed.nonlocal is ignored).
-    NonlocalBedOptions         bed;
-    NonlocalTrustRegionOptions solver;
-    NewtonKrylovOptions        krylov;
+    NonlocalBedOptions  bed;
+    EquilibriumOptions  solver = nonlocal_equilibrium_options();
+    NewtonKrylovOptions krylov;
     /// Sub-stepping of a step.
     SubstepLimits stepping;
   };
@@ -31,7 +31,7 @@ namespace compax::dem
    * Gonzalez & Cuitino 2012, or Hertz): each sub-step maps the particles
    * affinely to the new walls (heights between the punches, radii with the
    * die) and solves the static equilibrium of a NonlocalBedSystem on
-   * bed.particles and bed.walls with NonlocalTrustRegion (frozen-angle
+   * bed.particles and bed.walls with TrustRegionNewton (frozen-angle
    * Hessian, exact Newton-Krylov finish, FIRE fallback). A sub-step that
    * fails is undone and halved; after a success the sub-step grows again.
    * The law is elastic: there are no internal variables, and bed.contacts
@@ -89,8 +89,8 @@ namespace compax::dem
     NonlocalBedSystem
     make_system(Bed &bed, bool nonlocal) const;
 
-    ElasticDieOptions   opts;
-    NonlocalTrustRegion solver;
-    double              fraction = 1.0;
+    ElasticDieOptions opts;
+    TrustRegionNewton solver;
+    double            fraction = 1.0;
   };
 } // namespace compax::dem

@@ -168,6 +168,22 @@ namespace compax::dem
                    Eigen::VectorXd       &Jv,
                    bool                   turning = true);
 
+    /// The frozen-angle Jacobian (apply_jacobian with turning = false).
+    bool
+    apply_model_hessian(const Eigen::VectorXd &v, Eigen::VectorXd &Hv) override
+    {
+      apply_jacobian(v, Hv, false);
+      return true;
+    }
+
+    /// The exact Jacobian, turning contact directions included.
+    bool
+    apply_exact_jacobian(const Eigen::VectorXd &v, Eigen::VectorXd &Jv) override
+    {
+      apply_jacobian(v, Jv, true);
+      return true;
+    }
+
     /// Switches the formulation (the warm start is reset).
     void
     set_nonlocal(bool nonlocal);

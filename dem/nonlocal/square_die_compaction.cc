@@ -19,13 +19,13 @@ namespace compax::dem
   {
     NonlocalBedOptions bed_options;
     bed_options.nonlocal = nonlocal;
-    NonlocalBedSystem    system(particles, materials, die, bed_options);
-    FireRelaxation       fire;
-    TrustRegionNewton    newton(options.newton);
-    NonlocalNewtonKrylov krylov(options.krylov);
-    NonlocalTrustRegion  exact(options.nonlocal_newton, options.krylov);
-    Eigen::VectorXd      F;
-    BedCompactionResult  result;
+    NonlocalBedSystem   system(particles, materials, die, bed_options);
+    FireRelaxation      fire;
+    TrustRegionNewton   newton(options.newton);
+    NewtonKrylov        krylov(options.krylov);
+    TrustRegionNewton   exact(options.nonlocal_newton, options.krylov);
+    Eigen::VectorXd     F;
+    BedCompactionResult result;
 
     const double solid  = particles.solid_volume();
     const double area   = die.width * die.width;
@@ -114,7 +114,7 @@ namespace compax::dem
             bool done = false;
             if (options.solver == BedSolver::nonlocal_trust_region && nonlocal)
               {
-                const NonlocalTrustRegionResult tr = exact.solve(system);
+                const EquilibriumResult tr = exact.solve(system);
                 pt.newton_iterations += tr.iterations + tr.krylov_iterations;
                 pt.rejected_steps += tr.rejected_steps;
                 pt.fire_iterations += tr.fire_iterations;

@@ -1,8 +1,7 @@
 #pragma once
 
 #include "dem/nonlocal/nonlocal_bed_system.h"
-#include "dem/nonlocal/nonlocal_newton.h"
-#include "dem/nonlocal/nonlocal_trust_region.h"
+#include "dem/solver/newton_krylov.h"
 #include "dem/solver/trust_region_newton.h"
 
 #include <array>
@@ -19,10 +18,11 @@ namespace compax::dem
     /// TrustRegionNewton with the approximate K of NonlocalBedSystem
     /// (local stiffness at gamma + gamma_NL) and its energy-like acceptance.
     trust_region,
-    /// NonlocalNewtonKrylov (exact Jacobian-vector products, GMRES,
+    /// NewtonKrylov (exact Jacobian-vector products, GMRES,
     /// residual-norm backtracking), with the trust region as fallback.
     newton_krylov,
-    /// NonlocalTrustRegion: trust region on the frozen-angle Hessian
+    /// TrustRegionNewton with nonlocal_equilibrium_options(): trust
+    /// region on the frozen-angle Hessian
     /// (matrix-free, with the nonlocal amplification (I - D C)^-1), exact
     /// Newton-Krylov near equilibrium.
     nonlocal_trust_region
@@ -50,11 +50,11 @@ namespace compax::dem
     bool hertz_consolidation = true;
     /// Jammed steps start from the last converged increment (secant) when
     /// that leaves a smaller residual than the affine predictor.
-    bool                       secant_predictor = true;
-    BedSolver                  solver = BedSolver::nonlocal_trust_region;
-    EquilibriumOptions         newton;
-    NewtonKrylovOptions        krylov;
-    NonlocalTrustRegionOptions nonlocal_newton;
+    bool                secant_predictor = true;
+    BedSolver           solver           = BedSolver::nonlocal_trust_region;
+    EquilibriumOptions  newton;
+    NewtonKrylovOptions krylov;
+    EquilibriumOptions  nonlocal_newton = nonlocal_equilibrium_options();
   };
 
   /// One converged step.

@@ -71,7 +71,7 @@ namespace compax::dem
           ok = true;
         else if (residual.allFinite())
           {
-            const NonlocalTrustRegionResult r = solver.solve(system);
+            const EquilibriumResult r = solver.solve(system);
             total.iterations += r.iterations + r.krylov_iterations;
             total.cg_iterations += r.cg_iterations;
             total.relaxation_iterations += r.fire_iterations;

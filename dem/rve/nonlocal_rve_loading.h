@@ -1,11 +1,11 @@
 #pragma once
 
 #include "dem/nonlocal/nonlocal_bed_system.h"
-#include "dem/nonlocal/nonlocal_trust_region.h"
 #include "dem/rve/cell_steps.h"
 #include "dem/rve/periodic_bed.h"
 #include "dem/rve/rve_loading.h"
 #include "dem/solver/substepping.h"
+#include "dem/solver/trust_region_newton.h"
 
 #include <Eigen/Core>
 
@@ -21,9 +21,9 @@ namespace compax::dem
     /// Nonlocal formulation (Gonzalez & Cuitino 2012); false: Hertz.
     bool nonlocal = true;
     /// Candidate skin and Algorithm 1 tolerances (bed.nonlocal ignored).
-    NonlocalBedOptions         bed;
-    NonlocalTrustRegionOptions solver;
-    NewtonKrylovOptions        krylov;
+    NonlocalBedOptions  bed;
+    EquilibriumOptions  solver = nonlocal_equilibrium_options();
+    NewtonKrylovOptions krylov;
     /// Mean compressive stress below which a sub-step relaxes by FIRE with
     /// Hertz contacts instead (a loose cell has no stiffness; its overlaps,
     /// hence the nonlocal terms, are negligible) [Pa]; FIRE iterations,
@@ -44,10 +44,10 @@ namespace compax::dem
    * elastic laws. Each sub-step maps the particles affinely with the cell
    * (map_affinely) and solves for the fluctuations at the fixed lattice
    * with a NonlocalBedSystem on bed.particles and bed.cell (periodic
-   * images) by NonlocalTrustRegion; below the jamming pressure FIRE with
-   * Hertz contacts relaxes the cell instead. A failed sub-step is undone
-   * and halved. The law has no internal variables: bed.contacts is left
-   * alone (it holds no state of this law).
+   * images) by TrustRegionNewton (nonlocal_equilibrium_options()); below the
+   * jamming pressure FIRE with Hertz contacts relaxes the cell instead. A
+   * failed sub-step is undone and halved. The law has no internal variables:
+   * bed.contacts is left alone (it holds no state of this law).
    */
   class NonlocalRveLoading : public CellSteps<NonlocalRveLoading, RveStepResult>
   {
@@ -84,9 +84,9 @@ namespace compax::dem
     NonlocalBedSystem
     make_system(PeriodicBed &bed, bool nonlocal) const;
 
-    NonlocalRveOptions  opts;
-    NonlocalTrustRegion solver;
-    FireRelaxation      fire;
-    double              fraction = 1.0;
+    NonlocalRveOptions opts;
+    TrustRegionNewton  solver;
+    FireRelaxation     fire;
+    double             fraction = 1.0;
   };
 } // namespace compax::dem

@@ -59,5 +59,26 @@ namespace compax::dem
      */
     virtual bool
     limit_closing(const Eigen::VectorXd &s, Eigen::VectorXd &factor) const = 0;
+
+    /**
+     * Matrix-free products, at the state of the last residual() or
+     * assemble(), for a system whose assembled K only approximates dF/dx
+     * (the nonlocal formulation): the symmetric model Hessian of the
+     * trust-region subproblem, and the exact Jacobian J v = dF/dx v of
+     * Newton-Krylov. They return false where the assembled K is that
+     * operator (every local contact law: K is the Hessian of the stored
+     * energy); the solvers then apply K.
+     */
+    virtual bool
+    apply_model_hessian(const Eigen::VectorXd &, Eigen::VectorXd &)
+    {
+      return false;
+    }
+
+    virtual bool
+    apply_exact_jacobian(const Eigen::VectorXd &, Eigen::VectorXd &)
+    {
+      return false;
+    }
   };
 } // namespace compax::dem

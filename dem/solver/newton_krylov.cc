@@ -1,6 +1,6 @@
-#include "dem/nonlocal/nonlocal_newton.h"
+#include "dem/solver/newton_krylov.h"
 
-#include "dem/solver/trust_region_newton.h"
+#include "dem/solver/residual_norms.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,14 +9,22 @@
 
 namespace compax::dem
 {
-  NonlocalNewtonKrylov::NonlocalNewtonKrylov(const NewtonKrylovOptions options)
+  NewtonKrylov::NewtonKrylov(const NewtonKrylovOptions options)
       : opts(options)
   {
   }
 
+  void
+  NewtonKrylov::apply_jacobian(EquilibriumSystem     &system,
+                               const Eigen::VectorXd &v,
+                               Eigen::VectorXd       &Jv) const
+  {
+    if (!system.apply_exact_jacobian(v, Jv))
+      K.vmult(Jv, v);
+  }
+
   int
-  NonlocalNewtonKrylov::gmres(NonlocalBedSystem     &system,
-                              const Eigen::VectorXd &b)
+  NewtonKrylov::gmres(EquilibriumSystem &system, const Eigen::VectorXd &b)
   {
     const Eigen::Index n = b.size();
     const int          m = std::max(1, opts.restart);
@@ -32,7 +40,7 @@ namespace compax::dem
     while (total < opts.max_linear)
       {
         // r = b - J s
-        system.apply_jacobian(s, w);
+        apply_jacobian(system, s, w);
         Eigen::VectorXd r    = b - w;
         double          beta = r.norm();
         if (beta <= opts.linear_tolerance * b_norm)
@@ -46,7 +54,7 @@ namespace compax::dem
           {
             z        = lu.solve(V.col(k));
             Z.col(k) = z;
-            system.apply_jacobian(z, w);
+            apply_jacobian(system, z, w);
             for (int i = 0; i <= k; ++i)
               {
                 H(i, k) = w.dot(V.col(i));
@@ -87,7 +95,7 @@ namespace compax::dem
   }
 
   NewtonKrylovResult
-  NonlocalNewtonKrylov::solve(NonlocalBedSystem &system)
+  NewtonKrylov::solve(EquilibriumSystem &system)
   {
     NewtonKrylovResult result;
     const double       R = system.mean_radius();
@@ -132,7 +140,7 @@ namespace compax::dem
         ++result.iterations;
         if (opts.trace)
           {
-            system.apply_jacobian(s, w);
+            apply_jacobian(system, s, w);
             *opts.trace << "  nk it " << it << " rel "
                         << result.relative_residual << " |F| " << F.norm()
                         << " gmres " << lin << " lin.res "

@@ -1,7 +1,8 @@
 #pragma once
 
-#include "dem/nonlocal/nonlocal_bed_system.h"
 #include "dem/solver/block_sparse_matrix.h"
+#include "dem/solver/contact_sums.h"
+#include "dem/solver/equilibrium_system.h"
 
 #include <Eigen/Core>
 #include <Eigen/SparseLU>
@@ -10,7 +11,7 @@
 
 namespace compax::dem
 {
-  /// Tolerances of NonlocalNewtonKrylov.
+  /// Tolerances of NewtonKrylov.
   struct NewtonKrylovOptions
   {
     /// Converged when max_i |F_i| <= force_tolerance times the mean contact
@@ -36,7 +37,7 @@ namespace compax::dem
     std::ostream *trace = nullptr;
   };
 
-  /// Outcome of NonlocalNewtonKrylov::solve().
+  /// Outcome of NewtonKrylov::solve().
   struct NewtonKrylovResult
   {
     bool        converged         = false;
@@ -49,31 +50,39 @@ namespace compax::dem
   };
 
   /**
-   * Newton's method with the exact Jacobian of the nonlocal formulation
-   * (NonlocalBedSystem::apply_jacobian: d gamma_NL / dx through the
-   * linearized fixed point, and the turning contact directions), for a
-   * field that is not the gradient of an energy: the linear systems
-   * J s = -F, J not symmetric, are solved by restarted GMRES, right
-   * preconditioned by a sparse LU of the approximate (local-stiffness)
-   * K; the step is capped at a quarter of the Verlet skin per particle and
-   * accepted by backtracking on the residual norm |F| (Armijo), the merit
-   * function of a nonconservative system, instead of the energy decrease
-   * of TrustRegionNewton. Meant for jammed beds near equilibrium (the last
-   * iterations of a load step); floppy, unjammed beds need FIRE or the
-   * trust region.
+   * Newton's method with the exact Jacobian of a system
+   * (EquilibriumSystem::apply_exact_jacobian; the assembled K where the
+   * system has none other, as every local contact law), also for a field
+   * that is not the gradient of an energy (the nonlocal formulation: d
+   * gamma_NL / dx through the linearized fixed point, and the turning
+   * contact directions): the linear systems J s = -F, J not symmetric in
+   * general, are solved by restarted GMRES, right preconditioned by a
+   * sparse LU of the assembled K; the step is capped at a quarter of the
+   * Verlet skin per particle and accepted by backtracking on the residual
+   * norm |F| (Armijo), the merit function of a nonconservative system,
+   * instead of the energy decrease of the trust region. Meant for jammed
+   * beds near equilibrium (the last iterations of a solve, see
+   * EquilibriumOptions::krylov_switch); floppy, unjammed beds need FIRE or
+   * the trust region.
    */
-  class NonlocalNewtonKrylov
+  class NewtonKrylov
   {
   public:
-    explicit NonlocalNewtonKrylov(NewtonKrylovOptions options = {});
+    explicit NewtonKrylov(NewtonKrylovOptions options = {});
 
     NewtonKrylovResult
-    solve(NonlocalBedSystem &system);
+    solve(EquilibriumSystem &system);
 
   private:
     /// GMRES(m) for J s = b with right preconditioner; returns iterations.
     int
-    gmres(NonlocalBedSystem &system, const Eigen::VectorXd &b);
+    gmres(EquilibriumSystem &system, const Eigen::VectorXd &b);
+
+    /// Jv = J v: the system's exact Jacobian, or the assembled K.
+    void
+    apply_jacobian(EquilibriumSystem     &system,
+                   const Eigen::VectorXd &v,
+                   Eigen::VectorXd       &Jv) const;
 
     NewtonKrylovOptions                          opts;
     BlockSparseMatrix                            K;

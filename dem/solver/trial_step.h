@@ -9,7 +9,7 @@ namespace compax::dem
 {
   /**
    * The trial step of a trust-region method on a bed's stored energy
-   * (TrustRegionNewton, NonlocalTrustRegion): moves the particles by s and
+   * (TrustRegionNewton): moves the particles by s and
    * measures the energy change by the trapezoidal rule
    * -(F(x) + F(x+s)).s / 2, exact for a quadratic energy, so that no
    * energy needs to be evaluated. A step that is not kept is undone. The

@@ -9,7 +9,7 @@ namespace compax::dem
 {
   /**
    * The trust radius of a trust-region Newton method on a bed's stored
-   * energy (TrustRegionNewton, NonlocalTrustRegion). The radius bounds the
+   * energy (TrustRegionNewton). The radius bounds the
    * M-norm of the whole step; it is set in units of R_mean sqrt(N), so that
    * a radius of r R_mean sqrt(N) lets every particle move by about
    * r R_mean.

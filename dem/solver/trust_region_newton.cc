@@ -23,8 +23,10 @@ namespace compax::dem
     }
   } // namespace
 
-  TrustRegionNewton::TrustRegionNewton(const EquilibriumOptions options)
+  TrustRegionNewton::TrustRegionNewton(const EquilibriumOptions  options,
+                                       const NewtonKrylovOptions krylov)
       : opts(options)
+      , krylov(krylov)
   {
   }
 
@@ -35,12 +37,26 @@ namespace compax::dem
     return solve(system);
   }
 
+  void
+  TrustRegionNewton::apply_model_hessian(EquilibriumSystem     &system,
+                                         const Eigen::VectorXd &v,
+                                         Eigen::VectorXd       &Hv) const
+  {
+    if (!opts.matrix_free_model || !system.apply_model_hessian(v, Hv))
+      K.vmult(Hv, v);
+  }
+
   EquilibriumResult
   TrustRegionNewton::solve(EquilibriumSystem &system)
   {
+    constexpr auto shorten_then_stop
+      = EquilibriumOptions::LostDecrease::shorten_then_stop;
     EquilibriumResult result;
     const double      R_mean = system.mean_radius();
-    radius.start(system, opts.initial_radius, opts.max_radius);
+    radius.start(system,
+                 opts.initial_radius,
+                 opts.max_radius,
+                 opts.reset_radius);
     trial.forget();
 
     auto assemble = [&]() {
@@ -49,46 +65,111 @@ namespace compax::dem
       result.assembly_seconds += seconds_since(t0);
       ++result.assemblies;
     };
+    const auto relative = [&]() {
+      return F.allFinite() ? relative_residual(F, result.sums)
+                           : std::numeric_limits<double>::infinity();
+    };
+    // The subproblem's operator: the model Hessian.
+    struct ModelHessian
+    {
+      const TrustRegionNewton &solver;
+      EquilibriumSystem       &system;
+
+      void
+      vmult(Eigen::VectorXd &Hv, const Eigen::VectorXd &v) const
+      {
+        solver.apply_model_hessian(system, v, Hv);
+      }
+    };
+
+    const auto converged = [&](const bool force_ok) {
+      return force_ok && trial.last_move() <= opts.step_tolerance * R_mean;
+    };
 
     assemble();
-    const double F0      = std::max(F.norm(), 1e-300);
-    double       best    = std::numeric_limits<double>::infinity();
-    int          best_at = 0;
+    const double F0        = std::max(F.norm(), 1e-300);
+    double       best      = std::numeric_limits<double>::infinity();
+    int          best_at   = 0;
+    double       krylov_at = std::numeric_limits<double>::infinity();
     for (int it = 0;; ++it)
       {
-        result.relative_residual = relative_residual(F, result.sums);
+        result.relative_residual = relative();
+        if (!std::isfinite(result.relative_residual))
+          break;
         if (result.relative_residual < 0.1 * best)
           {
             best    = result.relative_residual;
             best_at = it;
           }
-        if (it - best_at >= opts.stall_iterations && opts.fire_iterations > 0)
-          {
-            // Newton crawls: the bed is rearranging. Relax with FIRE.
-            const auto       tf = clock_type::now();
-            const FireResult fr = fire.relax(system,
-                                             opts.fire_tolerance,
-                                             opts.fire_iterations,
-                                             opts.force_floor);
-            result.fire_seconds += seconds_since(tf);
-            result.fire_iterations += fr.iterations;
-            assemble();
-            result.relative_residual = relative_residual(F, result.sums);
-            best                     = result.relative_residual;
-            best_at                  = it;
-            radius.restart();
-            trial.forget();
-          }
-        const bool force_ok = result.relative_residual <= opts.force_tolerance
-                              || max_particle_norm(F) <= opts.force_floor;
-        const bool step_ok = trial.last_move() <= opts.step_tolerance * R_mean;
-        if (force_ok && step_ok)
+        bool force_ok = result.relative_residual <= opts.force_tolerance
+                        || max_particle_norm(F) <= opts.force_floor;
+        if (converged(force_ok))
           {
             result.converged = true;
             break;
           }
-        if (it >= opts.max_iterations
-            || !std::isfinite(result.relative_residual))
+        if (result.relative_residual < opts.krylov_switch
+            && result.relative_residual < 0.1 * krylov_at)
+          {
+            // Close to equilibrium: Newton on the exact Jacobian finishes.
+            krylov_at                   = result.relative_residual;
+            const NewtonKrylovResult nk = krylov.solve(system);
+            result.krylov_iterations += nk.iterations;
+            if (opts.trace)
+              *opts.trace << "  newton it " << it << " newton-krylov from "
+                          << result.relative_residual << ": " << nk.iterations
+                          << " iterations, "
+                          << (nk.converged ? "converged" : "failed")
+                          << ", residual " << nk.relative_residual << '\n';
+            assemble();
+            result.relative_residual = relative();
+            if (nk.converged)
+              {
+                result.converged = true;
+                break;
+              }
+            best_at = it; // give the trust region its own chance
+          }
+        if (it - best_at >= opts.stall_iterations && opts.fire_iterations > 0)
+          {
+            // Newton crawls: the bed is rearranging. Relax with FIRE.
+            const double target
+              = opts.fire_below_residual
+                  ? std::min(opts.fire_tolerance,
+                             std::max(opts.force_tolerance,
+                                      0.01 * result.relative_residual))
+                  : opts.fire_tolerance;
+            const auto       tf = clock_type::now();
+            const FireResult fr = fire.relax(system,
+                                             target,
+                                             opts.fire_iterations,
+                                             opts.force_floor);
+            result.fire_seconds += seconds_since(tf);
+            result.fire_iterations += fr.iterations;
+            if (opts.trace)
+              *opts.trace << "  newton it " << it << " stalled: FIRE "
+                          << fr.iterations << '\n';
+            assemble();
+            result.relative_residual = relative();
+            best                     = result.relative_residual;
+            best_at                  = it;
+            radius.restart();
+            trial.forget();
+            krylov_at = std::numeric_limits<double>::infinity();
+            if (!std::isfinite(result.relative_residual))
+              break;
+            if (opts.test_after_fallback)
+              {
+                force_ok = result.relative_residual <= opts.force_tolerance
+                           || max_particle_norm(F) <= opts.force_floor;
+                if (converged(force_ok))
+                  {
+                    result.converged = true;
+                    break;
+                  }
+              }
+          }
+        if (it >= opts.max_iterations)
           break;
 
         // Trust-region subproblem.
@@ -96,8 +177,13 @@ namespace compax::dem
         M.compute(K, opts.preconditioner_floor);
         const double eta = std::min(opts.max_forcing, std::sqrt(F.norm() / F0))
                            * (force_ok ? 0.1 : 1.0);
-        const SteihaugResult sub
-          = cg.solve(K, M, F, radius.value(), eta, opts.max_cg_iterations, s);
+        const SteihaugResult sub = cg.solve(ModelHessian{*this, system},
+                                            M,
+                                            F,
+                                            radius.value(),
+                                            eta,
+                                            opts.max_cg_iterations,
+                                            s);
         result.linear_seconds += seconds_since(t0);
         result.cg_iterations += sub.iterations;
         ++result.iterations;
@@ -110,12 +196,12 @@ namespace compax::dem
             // step uniformly instead (a Steihaug step is a descent
             // direction, g.s < 0).
             Ks.resize(s.size());
-            K.vmult(Ks, s);
+            apply_model_hessian(system, s, Ks);
             pred = -(F.dot(s) + 0.5 * s.dot(Ks));
-            if (!(pred > 0.0))
+            if (!(pred > 0.0) && opts.lost_decrease == shorten_then_stop)
               {
                 s = factor.minCoeff() * s_full;
-                K.vmult(Ks, s);
+                apply_model_hessian(system, s, Ks);
                 pred = -(F.dot(s) + 0.5 * s.dot(Ks));
               }
             M.multiply(Ks, s);
@@ -132,9 +218,17 @@ namespace compax::dem
         if (!(pred > 0.0))
           {
             // No decrease predicted: the residual is numerically zero in
-            // every loaded direction.
-            result.converged = force_ok;
-            break;
+            // every loaded direction, or the clipped step lost it.
+            if (force_ok || opts.lost_decrease == shorten_then_stop)
+              {
+                result.converged = force_ok;
+                break;
+              }
+            radius.set(0.25 * radius.value());
+            ++result.rejected_steps;
+            if (radius.value() < 1e-12 * R_mean)
+              break;
+            continue;
           }
 
         const ContactSums old_sums = result.sums;
@@ -149,9 +243,11 @@ namespace compax::dem
                       << " rho " << rho << " step " << max_particle_norm(s)
                       << '\n';
 
-        radius.update(rho, step_norm, sub.on_boundary);
-        if (!trial.keep_or_undo(
-              rho, std::isfinite(F.squaredNorm()), system, s, assemble))
+        // A non-finite ratio counts as a poor prediction.
+        radius.update(std::isfinite(rho) ? rho : 0.0,
+                      step_norm,
+                      sub.on_boundary);
+        if (!trial.keep_or_undo(rho, F.allFinite(), system, s, assemble))
           {
             ++result.rejected_steps;
             if (radius.value() < 1e-12 * R_mean)

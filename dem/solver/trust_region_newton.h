@@ -5,6 +5,7 @@
 #include "dem/solver/contact_assembler.h"
 #include "dem/solver/equilibrium_system.h"
 #include "dem/solver/fire_relaxation.h"
+#include "dem/solver/newton_krylov.h"
 #include "dem/solver/residual_norms.h"
 #include "dem/solver/steihaug_cg.h"
 #include "dem/solver/trial_step.h"
@@ -67,11 +68,71 @@ namespace compax::dem
     /// Relative residual (max_i |F_i| / mean contact force) at which a FIRE
     /// fallback hands back to Newton [-].
     double fire_tolerance = 1e-3;
+    /// The model Hessian of the trust-region subproblem. false: the
+    /// assembled K; true: the system's matrix-free operator where it has
+    /// one (EquilibriumSystem::apply_model_hessian: the frozen-angle
+    /// Jacobian of the nonlocal formulation, with the amplification
+    /// (I - D C)^-1 that its approximate K lacks), K then preconditions.
+    bool matrix_free_model = false;
+    /// Start every solve at initial_radius instead of the radius the last
+    /// solve ended with.
+    bool reset_radius = false;
+    /// Below this relative residual Newton-Krylov on the exact Jacobian
+    /// (NewtonKrylov) finishes the solve: quadratic convergence where the
+    /// assembled K only approximates dF/dx (the nonlocal formulation); if
+    /// it fails, the trust region goes on from where it stopped. 0: never
+    /// [-].
+    double krylov_switch = 0.0;
+    /// Target of the FIRE fallback. false: fire_tolerance; true: two
+    /// decades below the current residual, within [force_tolerance,
+    /// fire_tolerance] (FIRE converges for a field that is not a gradient,
+    /// where the trust region's work measure can cycle).
+    bool fire_below_residual = false;
+    /// A step that predicts no decrease while the bed is out of balance.
+    enum class LostDecrease
+    {
+      /// A step clipped by limit_to_gaps is shortened uniformly instead
+      /// (a Steihaug step is a descent direction); if that predicts no
+      /// decrease either, the solve stops (not converged).
+      shorten_then_stop,
+      /// The trust radius is quartered and the subproblem solved again.
+      shrink_radius
+    };
+    LostDecrease lost_decrease = LostDecrease::shorten_then_stop;
+    /// After a FIRE fallback, test convergence and build the next step
+    /// from the relaxed state's residual; false: the next iteration tests
+    /// it, and the step after the fallback keeps the forcing term of the
+    /// residual before it.
+    bool test_after_fallback = true;
     /// Where to write one line per Newton iteration (residual, trust
     /// radius, CG iterations, ratio of actual to predicted decrease), for
     /// diagnosing convergence; null for none.
     std::ostream *trace = nullptr;
   };
+
+  /**
+   * The trust region for the nonlocal formulation (Gonzalez & Cuitino
+   * 2012; NonlocalBedSystem), whose model Hessian is the matrix-free
+   * frozen-angle Jacobian and whose forces are not a gradient: more
+   * iterations with shorter CG solves, a fresh radius per load step, the
+   * exact-Jacobian Newton-Krylov below a relative residual of 1e-2, FIRE
+   * after 40 iterations without a tenfold drop.
+   */
+  inline EquilibriumOptions
+  nonlocal_equilibrium_options()
+  {
+    EquilibriumOptions o;
+    o.matrix_free_model   = true;
+    o.max_iterations      = 300;
+    o.max_cg_iterations   = 400;
+    o.stall_iterations    = 40;
+    o.reset_radius        = true;
+    o.krylov_switch       = 1e-2;
+    o.fire_below_residual = true;
+    o.lost_decrease       = EquilibriumOptions::LostDecrease::shrink_radius;
+    o.test_after_fallback = false;
+    return o;
+  }
 
   /// Outcome of one equilibrium solve.
   struct EquilibriumResult
@@ -89,6 +150,8 @@ namespace compax::dem
     int    assemblies       = 0;
     int    fire_iterations  = 0;
     double fire_seconds     = 0.0;
+    /// Iterations of the Newton-Krylov finish (krylov_switch).
+    int krylov_iterations = 0;
   };
 
   /**
@@ -103,11 +166,19 @@ namespace compax::dem
    * singular directions of rattlers. The energy change of a step is
    * measured by the trapezoidal rule -(F(x) + F(x+s)).s/2, exact for a
    * quadratic energy, so no energy needs to be evaluated.
+   *
+   * The model Hessian is the assembled K, or with
+   * EquilibriumOptions::matrix_free_model the system's matrix-free
+   * operator (the nonlocal formulation). With
+   * EquilibriumOptions::krylov_switch, Newton-Krylov on the exact Jacobian
+   * finishes near equilibrium. One solver for every system: local laws,
+   * the nonlocal layer, die beds and periodic cells.
    */
   class TrustRegionNewton
   {
   public:
-    explicit TrustRegionNewton(EquilibriumOptions options = {});
+    explicit TrustRegionNewton(EquilibriumOptions  options = {},
+                               NewtonKrylovOptions krylov  = {});
 
     /// Moves bed.particles to equilibrium; bed.walls and histories fixed.
     EquilibriumResult
@@ -144,10 +215,17 @@ namespace compax::dem
     BlockSparseMatrix         K;
     BlockJacobiPreconditioner M;
     SteihaugCG                cg;
+    NewtonKrylov              krylov;
     FireRelaxation            fire;
     TrialStep                 trial;
     Eigen::VectorXd           F, s, s_full, Ks, factor;
-    TrustRadius               radius;
+
+    /// The subproblem's model step: H s with the model Hessian.
+    void
+                apply_model_hessian(EquilibriumSystem     &system,
+                                    const Eigen::VectorXd &v,
+                                    Eigen::VectorXd       &Hv) const;
+    TrustRadius radius;
   };
 
 } // namespace compax::dem

@@ -6,9 +6,9 @@
 
 #include "dem/contact/pair_properties.h"
 #include "dem/nonlocal/nonlocal_bed_system.h"
-#include "dem/nonlocal/nonlocal_newton.h"
 #include "dem/nonlocal/square_die_compaction.h"
 #include "dem/nonlocal/square_die_deposition.h"
+#include "dem/solver/newton_krylov.h"
 #include "dem/solver/trust_region_newton.h"
 
 #include "nonlocal_test_support.h"
@@ -178,7 +178,7 @@ namespace
             NonlocalBedSystem system(c.particles, rubber, c.die);
             bool              converged;
             if (krylov)
-              converged = NonlocalNewtonKrylov().solve(system).converged;
+              converged = NewtonKrylov().solve(system).converged;
             else
               converged = TrustRegionNewton().solve(system).converged;
             ASSERT_TRUE(converged) << n << ' ' << eps << ' ' << krylov;

@@ -10,7 +10,7 @@
 #include "dem/die/die_setup.h"
 #include "dem/nonlocal/elastic_die_stepper.h"
 #include "dem/nonlocal/nonlocal_bed_system.h"
-#include "dem/nonlocal/nonlocal_trust_region.h"
+#include "dem/solver/trust_region_newton.h"
 #include "tests/support/gonzalez_material1.h"
 
 #include "nonlocal_test_support.h"
@@ -133,9 +133,9 @@ namespace
               }
             NonlocalBedOptions o;
             o.nonlocal = nonlocal;
-            NonlocalBedSystem               system(p, rubber, die, o);
-            NonlocalTrustRegion             solver;
-            const NonlocalTrustRegionResult r = solver.solve(system);
+            NonlocalBedSystem       system(p, rubber, die, o);
+            TrustRegionNewton       solver(nonlocal_equilibrium_options());
+            const EquilibriumResult r = solver.solve(system);
             ASSERT_TRUE(r.converged) << n << ' ' << eps << ' ' << nonlocal;
             Eigen::VectorXd F;
             system.residual(F);
@@ -176,7 +176,7 @@ namespace
         die.set_output(&csv, nullptr);
         ASSERT_NO_THROW(die.run()) << nonlocal;
         ASSERT_GT(die.jamming_density(), 0.0);
-        const double tol     = NonlocalTrustRegionOptions{}.force_tolerance;
+        const double tol     = nonlocal_equilibrium_options().force_tolerance;
         bool         reached = false, unloaded = false;
         for (const DieRecord &r : die.records())
           {

@@ -7,7 +7,6 @@
 // Algorithm 1 sweep before jamming.
 
 #include "dem/nonlocal/nonlocal_bed_system.h"
-#include "dem/nonlocal/nonlocal_trust_region.h"
 #include "dem/nonlocal/square_die_compaction.h"
 #include "dem/nonlocal/square_die_deposition.h"
 #include "dem/solver/trust_region_newton.h"
@@ -81,13 +80,12 @@ namespace
       for (const double eps : {0.002, 0.02})
         for (const double krylov_switch : {0.0, 1e-2})
           {
-            const double               Delta = 2.0 * n * R * eps;
-            Cluster                    c     = make_chain(n, R, Delta);
-            NonlocalBedSystem          system(c.particles, rubber, c.die);
-            NonlocalTrustRegionOptions o;
-            o.krylov_switch = krylov_switch;
-            const NonlocalTrustRegionResult r
-              = NonlocalTrustRegion(o).solve(system);
+            const double       Delta = 2.0 * n * R * eps;
+            Cluster            c     = make_chain(n, R, Delta);
+            NonlocalBedSystem  system(c.particles, rubber, c.die);
+            EquilibriumOptions o      = nonlocal_equilibrium_options();
+            o.krylov_switch           = krylov_switch;
+            const EquilibriumResult r = TrustRegionNewton(o).solve(system);
             ASSERT_TRUE(r.converged) << n << ' ' << eps;
             if (krylov_switch == 0.0)
               {
@@ -102,12 +100,11 @@ namespace
   {
     for (unsigned int seed : {1u, 2u, 5u})
       {
-        Cluster                    c = make_cluster(seed);
-        NonlocalBedSystem          system(c.particles, two_materials, c.die);
-        NonlocalTrustRegionOptions o;
-        o.krylov_switch = 0.0; // the trust region alone
-        const NonlocalTrustRegionResult r
-          = NonlocalTrustRegion(o).solve(system);
+        Cluster            c = make_cluster(seed);
+        NonlocalBedSystem  system(c.particles, two_materials, c.die);
+        EquilibriumOptions o      = nonlocal_equilibrium_options();
+        o.krylov_switch           = 0.0; // the trust region alone
+        const EquilibriumResult r = TrustRegionNewton(o).solve(system);
         ASSERT_TRUE(r.converged) << seed;
         Eigen::VectorXd   F;
         const ContactSums sums = system.residual(F);
