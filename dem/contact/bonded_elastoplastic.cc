@@ -105,15 +105,14 @@ namespace compax::dem
         if (gamma <= 0.0)
           return {};
         const double a       = plastic_radius(gamma);
-        const double a_pow_m = std::pow(a, inverse_m);
+        const double a_pow_m = root_m(a);
         return {n_p * a * a * a_pow_m,
                 n_p * (2.0 + inverse_m) * c2 * k.effective_radius * a_pow_m,
                 a};
       }
 
     // Elastic (un)loading: a^2 = a_p^2 - (alpha (gamma_p - gamma))^2.
-    const double alpha
-      = 4.0 * k.effective_modulus / (3.0 * n_p * std::pow(a_p, inverse_m));
+    const double alpha = 4.0 * k.effective_modulus / (3.0 * n_p * root_m(a_p));
     const double recovery = alpha * (gamma_p - gamma);
     const double a2       = a_p * a_p - recovery * recovery;
     if (a2 <= 0.0)
@@ -123,7 +122,7 @@ namespace compax::dem
 
     ContactResponse r;
     r.contact_radius = a;
-    r.force          = 2.0 * n_p / pi * a_p * a_p * std::pow(a_p, inverse_m)
+    r.force          = 2.0 * n_p / pi * a_p * a_p * root_m(a_p)
               * (std::asin(x) - x * std::sqrt(1.0 - x * x));
     r.stiffness = 16.0 * k.effective_modulus * a / (3.0 * pi);
 

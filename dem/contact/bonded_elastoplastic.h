@@ -3,6 +3,8 @@
 #include "dem/contact/contact_law.h"
 #include "dem/contact/elastoplastic_material.h"
 
+#include <cmath>
+
 namespace compax::dem
 {
   /**
@@ -149,6 +151,14 @@ namespace compax::dem
     }
 
   private:
+    /// x^{1/m}, by sqrt for m = 2 (libm's pow dominated the profile of
+    /// the residual; the solvers evaluate response() in their hot loops).
+    double
+    root_m(const double x) const
+    {
+      return k.plastic_exponent == 2.0 ? std::sqrt(x) : std::pow(x, inverse_m);
+    }
+
     PairConstants k;
     double        c2;
     double        inverse_m;

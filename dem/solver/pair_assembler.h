@@ -28,33 +28,18 @@ namespace compax::dem
     unloading
   };
 
-  /**
-   * The law's response(gamma, a_p, a_B) evaluated inline: the plastic
-   * branch for any m, the elastic branch and the bridge for m = 2 with
-   * a^{1/2} and a_p^{1/2} by sqrt instead of pow (libm's pow dominated the
-   * profile of the residual); otherwise delegated to the law. The same
-   * formulas, equal to round-off (tests/unit/dem/test_solver_consolidation
-   * compares both on every branch).
-   */
-  ContactResponse
-  contact_response(const BondedElastoplasticLaw &law,
-                   double                        gamma,
-                   const ContactHistory         &history);
-
   /// The elastic unloading stiffness 16 E* a / (3 pi) of a contact of
   /// radius a [N/m].
   double
   unloading_stiffness(const BondedElastoplasticLaw &law, double a);
 
-  /// Any particle law's response: the bonded law's inline path above,
-  /// another law's own evaluate() (a direct call: the laws are final).
+  /// Any particle law's response: the law's own evaluate() (a direct
+  /// call: the laws are final).
   inline ContactResponse
   contact_response(const ParticleLaw    &law,
                    const double          gamma,
                    const ContactHistory &history)
   {
-    if (const auto *bonded = std::get_if<BondedElastoplasticLaw>(&law))
-      return contact_response(*bonded, gamma, history);
     return law_response(law, gamma, history);
   }
 
