@@ -96,6 +96,8 @@ namespace compax::dem
                                    const double a_p,
                                    const double a_B) const
   {
+    if (a_p == 0.0 && gamma <= 0.0)
+      return {}; // virgin and apart (most candidates of a Verlet list)
     const double n_p     = k.plastic_coefficient;
     const double gamma_p = plastic_overlap(a_p);
 
