@@ -2,7 +2,6 @@
 
 #include "coupling/rve_database_study.h"
 #include "fem/material_model.h"
-#include "fem/material_registry.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -14,28 +13,6 @@
 
 namespace compax::cli
 {
-  /**
-   * The materials of `compax tablet`'s Material/Model: the closed-form ones
-   * of fem, then multiscale-database and multiscale-fe2, whose parameters
-   * lie in the subsection Multiscale and which make_multiscale_material()
-   * builds at run time.
-   */
-  fem::MaterialRegistry
-  tablet_materials();
-
-  /**
-   * Declares the subsection Multiscale of `compax tablet`: the RVE
-   * (Material, Bonding, Packing of its particles), the database paths, the
-   * RVE solver, and the FE2 options (Pool size, Tangent floor modulus,
-   * Tangent floor stress, FE2 stress resolution).
-   */
-  void
-  declare_multiscale_parameters(dealii::ParameterHandler &prm);
-
-  /// Reads and checks the subsection (InputError naming the entry).
-  void
-  check_multiscale_parameters(dealii::ParameterHandler &prm);
-
   /**
    * The particle-derived material of `Material/Model`:
    *  - multiscale-database: the Drucker-Prager Cap fitted to the RVE

@@ -1,6 +1,7 @@
 #include "apps/tablet/tablet_command.h"
 
-#include "apps/tablet/multiscale_parameters.h"
+#include "apps/tablet/multiscale_material_setup.h"
+#include "coupling/parameters/multiscale_parameters.h"
 
 #include "apps/cli/input_error.h"
 #include "apps/cli/parameters.h"
@@ -31,17 +32,17 @@ namespace compax::cli
     void
     declare(dealii::ParameterHandler &prm)
     {
-      coupling::declare_tablet_parameters(prm, tablet_materials());
-      declare_multiscale_parameters(prm);
+      coupling::declare_tablet_parameters(prm, coupling::tablet_materials());
+      coupling::declare_multiscale_parameters(prm);
     }
 
     TabletSetup
     read(dealii::ParameterHandler &prm)
     {
       TabletSetup s
-        = coupling::parse_tablet_parameters(prm, tablet_materials());
+        = coupling::parse_tablet_parameters(prm, coupling::tablet_materials());
       if (!s.deferred_material.empty())
-        check_multiscale_parameters(prm);
+        coupling::check_multiscale_parameters(prm);
       return s;
     }
 
