@@ -72,9 +72,10 @@ namespace compax::dem
     /// elasto-plastic law: Hertz, or the nonlocal contact formulation of
     /// Gonzalez & Cuitino 2012 (elastic->nonlocal), stepped by an
     /// ElasticDieStepper (consolidation by FIRE with Hertz contacts, then
-    /// TrustRegionNewton with nonlocal_equilibrium_options()). No bonds: bonding surface and bonds are 0, the
-    /// coordination number counts the loaded particle pairs. Empty: the
-    /// ContactModel's law (LoadStepper, TrustRegionNewton).
+    /// TrustRegionNewton with nonlocal_equilibrium_options()). No bonds:
+    /// bonding surface and bonds are 0, the coordination number counts the
+    /// loaded particle pairs. Empty: the ContactModel's law (LoadStepper,
+    /// TrustRegionNewton).
     std::optional<ElasticDieOptions> elastic;
     /// The interior of the compact, whose stress and solid fraction die.csv
     /// reports beside the die averages (measure_interior()): the particles

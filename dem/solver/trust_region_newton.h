@@ -219,13 +219,14 @@ namespace compax::dem
     FireRelaxation            fire;
     TrialStep                 trial;
     Eigen::VectorXd           F, s, s_full, Ks, factor;
+    TrustRadius               radius;
 
-    /// The subproblem's model step: H s with the model Hessian.
+    /// Hv = H v with the subproblem's model Hessian (K, or the system's
+    /// operator with EquilibriumOptions::matrix_free_model).
     void
-                apply_model_hessian(EquilibriumSystem     &system,
-                                    const Eigen::VectorXd &v,
-                                    Eigen::VectorXd       &Hv) const;
-    TrustRadius radius;
+    apply_model_hessian(EquilibriumSystem     &system,
+                        const Eigen::VectorXd &v,
+                        Eigen::VectorXd       &Hv) const;
   };
 
 } // namespace compax::dem
