@@ -1,6 +1,7 @@
 #include "dem/solver/consolidation.h"
 
 #include "dem/numbers.h"
+#include "dem/solver/punch_gap_map.h"
 #include "dem/solver/trust_region_newton.h"
 #include "dem/wall_clock.h"
 
@@ -10,23 +11,6 @@
 
 namespace compax::dem
 {
-  namespace
-  {
-    /// Affine map of the heights between the punches of `from` onto `to`.
-    void
-    map_heights(ParticleSystem &p, const DieWalls &from, const DieWalls &to)
-    {
-      const double h0 = from.height(), h1 = to.height();
-      if (h0 <= 0.0 || h1 == h0)
-        return;
-      for (auto &x : p.positions)
-        {
-          const double t = (x[2] - from.lower_punch) / h0;
-          x[2]           = to.lower_punch + t * h1;
-        }
-    }
-  } // namespace
-
   Consolidation::Consolidation(const ConsolidationOptions options)
       : opts(options)
   {
@@ -104,7 +88,7 @@ namespace compax::dem
           = bed.walls.lower_punch
             + std::max(h_min, bed.walls.height() * (1.0 - strain_increment));
         strain_last = 1.0 - next.height() / bed.walls.height();
-        map_heights(bed.particles, bed.walls, next);
+        map_heights(bed.particles, bed.walls, next, GapParticles::all);
         bed.walls = next;
         r         = relax(bed, model);
         result.iterations += r.iterations;

@@ -1,5 +1,7 @@
 #include "dem/solver/load_stepper.h"
 
+#include "dem/solver/punch_gap_map.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -41,20 +43,6 @@ namespace compax::dem
       total.last = r;
     }
 
-    /// Affine map of the heights between the punches of `from` onto `to`.
-    void
-    map_heights(ParticleSystem &p, const DieWalls &from, const DieWalls &to)
-    {
-      const double h0 = from.height(), h1 = to.height();
-      if (h0 <= 0.0 || h1 == h0)
-        return;
-      for (auto &x : p.positions)
-        {
-          const double t = (x[2] - from.lower_punch) / h0;
-          if (t >= 0.0 && t <= 1.0)
-            x[2] = to.lower_punch + t * h1;
-        }
-    }
   } // namespace
 
   bool
@@ -220,7 +208,7 @@ namespace compax::dem
     if (parallel)
       bed.particles.coordinates() += (dot / oo) * last_increment;
     else
-      map_heights(bed.particles, w, next);
+      map_heights(bed.particles, w, next, GapParticles::between_punches);
   }
 
   LoadStepResult
