@@ -100,12 +100,8 @@ namespace compax::dem
     NewtonKrylovResult result;
     const double       R = system.mean_radius();
     const auto relative  = [](const Eigen::VectorXd &f, const ContactSums &s) {
-      if (!f.allFinite())
-        return std::numeric_limits<double>::infinity();
-      const double fmax = max_particle_norm(f);
-      return s.mean_force > 0.0
-                ? fmax / s.mean_force
-                : (fmax == 0.0 ? 0.0 : std::numeric_limits<double>::infinity());
+      return f.allFinite() ? relative_residual(f, s)
+                            : std::numeric_limits<double>::infinity();
     };
     result.sums = system.assemble(F, K);
     ++result.residuals;

@@ -82,6 +82,10 @@ namespace compax::dem
       }
     };
 
+    const auto forces_balanced = [&]() {
+      return result.relative_residual <= opts.force_tolerance
+             || max_particle_norm(F) <= opts.force_floor;
+    };
     const auto converged = [&](const bool force_ok) {
       return force_ok && trial.last_move() <= opts.step_tolerance * R_mean;
     };
@@ -101,8 +105,7 @@ namespace compax::dem
             best    = result.relative_residual;
             best_at = it;
           }
-        bool force_ok = result.relative_residual <= opts.force_tolerance
-                        || max_particle_norm(F) <= opts.force_floor;
+        bool force_ok = forces_balanced();
         if (converged(force_ok))
           {
             result.converged = true;
@@ -160,8 +163,7 @@ namespace compax::dem
               break;
             if (opts.test_after_fallback)
               {
-                force_ok = result.relative_residual <= opts.force_tolerance
-                           || max_particle_norm(F) <= opts.force_floor;
+                force_ok = forces_balanced();
                 if (converged(force_ok))
                   {
                     result.converged = true;
