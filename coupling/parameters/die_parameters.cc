@@ -216,8 +216,9 @@ namespace compax::coupling
       "(Newton has no stiffness along the mechanisms of an unjammed bed); "
       "above, the trust-region Newton solves to the Solver tolerances. "
       "Contact forces below 1e-2 x 0.5 MPa on a mean cross-section pi R^2 "
-      "(7.6e-4 N for R = 220 um) are not resolved: they grow no plastic "
-      "radius, and the coordination number counts the contacts above. "
+      "(7.6e-4 N for R = 220 um) are not resolved: the coordination number "
+      "counts the contacts above, and with History update = resolved-forces "
+      "they grow no plastic radius. "
       "frozen-history: the former shortcut, for comparison: the bed is "
       "relaxed at fixed (virgin) internal variables, without plastic "
       "deformation or bridges, until the punch carries 0.5 MPa; Eq. 13 "
@@ -247,6 +248,9 @@ namespace compax::coupling
       "instead of FIRE (3.6x fewer residual evaluations and 7x less time "
       "to rho = 0.70 on the 6512-sphere Material 1 bed, 1.7x on 2000 "
       "spheres; see README, The loose regime).");
+    declare_history_update(prm,
+                           "1e-2 x 0.5 MPa on a mean cross-section pi R^2, "
+                           "7.6e-4 N for R = 220 um");
     prm.declare_entry("Maximum ejection steps",
                       "40",
                       dealii::Patterns::Integer(1, 100000),
@@ -434,6 +438,7 @@ namespace compax::coupling
     protocol.consolidate        = prm.get("Consolidation") == "frozen-history";
     protocol.unjammed_equilibrium
       = dem::parse_unjammed_equilibrium(prm.get("Unjammed equilibrium"));
+    protocol.resolved_history    = get_resolved_history(prm);
     protocol.checkpoint_interval = prm.get_integer("Checkpoint interval");
     protocol.stop_after      = prm.get_integer("Stop after compaction steps");
     const std::string resume = prm.get("Resume from");

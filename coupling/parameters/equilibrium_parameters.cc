@@ -43,4 +43,33 @@ namespace compax::coupling
     options.step_tolerance  = prm.get_double("Step tolerance");
     options.max_iterations  = prm.get_integer("Maximum iterations");
   }
+
+  void
+  declare_history_update(dealii::ParameterHandler &prm,
+                         const std::string        &resolution_note)
+  {
+    prm.declare_entry(
+      "History update",
+      "resolved-forces",
+      dealii::Patterns::Selection("resolved-forces|every-contact"),
+      "Bonded path (Consolidation = none) only: the contacts Eq. 13 "
+      "updates at a converged state. resolved-forces (default): a contact "
+      "that loads plastically with a force not above the force resolution "
+      "("
+        + resolution_note
+        + ") keeps its internal variables (no plastic radius, no bridge): "
+          "the balanced loose states of an unjammed bed are force-free, and "
+          "their left-over overlaps of the order of the solver tolerance "
+          "are not taken as plastic deformation. every-contact: Eq. 13 "
+          "applies at every positive overlap, however small its force, so "
+          "the touching contacts of a loose bed grow plastic radii and "
+          "bridges from the first converged state on (see README, The "
+          "loose regime, for the measured difference).");
+  }
+
+  bool
+  get_resolved_history(dealii::ParameterHandler &prm)
+  {
+    return prm.get("History update") == "resolved-forces";
+  }
 } // namespace compax::coupling

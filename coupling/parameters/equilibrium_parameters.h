@@ -20,4 +20,18 @@ namespace compax::coupling
   void
   get_equilibrium_tolerances(dealii::ParameterHandler &prm,
                              dem::EquilibriumOptions  &options);
+
+  /**
+   * Declares, in the current subsection, `History update`: whether Eq. 13
+   * of Gonzalez 2018 skips contacts whose force is below the force
+   * resolution (the die's and the RVE's bonded path share it). @p
+   * resolution_note says what the force resolution is where it is declared.
+   */
+  void
+  declare_history_update(dealii::ParameterHandler &prm,
+                         const std::string        &resolution_note);
+
+  /// Reads it: true for resolved-forces.
+  bool
+  get_resolved_history(dealii::ParameterHandler &prm);
 } // namespace compax::coupling

@@ -297,7 +297,8 @@ namespace compax::coupling
       "contact force, and that relaxed state is a converged state to which "
       "the history update of Eq. 13 applies; contact forces below 1e-2 x "
       "Jamming pressure on a mean cross-section pi R^2 (7.6e-4 N for R = "
-      "220 um and 0.5 MPa) grow no plastic radius and no bridge; once a "
+      "220 um and 0.5 MPa) grow no plastic radius and no bridge (History "
+      "update = resolved-forces); once a "
       "converged state carried the Jamming pressure the cell stays jammed "
       "(Newton for every later step, unloading included). frozen-history: "
       "the former shortcut, for comparison: a step that starts below the "
@@ -319,6 +320,9 @@ namespace compax::coupling
       "2e5 FIRE iterations, else the step is cut back. balanced-lbfgs "
       "(default): the same, minimised by L-BFGS instead of FIRE. The last "
       "three balance loose states as tightly as jammed ones.");
+    declare_history_update(prm,
+                           "1e-2 x Jamming pressure on a mean cross-section "
+                           "pi R^2");
     prm.leave_subsection();
   }
 
@@ -628,6 +632,7 @@ namespace compax::coupling
                            : dem::RveConsolidation::none;
     o.unjammed_equilibrium
       = dem::parse_unjammed_equilibrium(prm.get("Unjammed equilibrium"));
+    o.resolved_history = coupling::get_resolved_history(prm);
     prm.leave_subsection();
     return o;
   }

@@ -199,6 +199,7 @@ namespace compax::dem
         stepping.unjammed_iterations  = c.max_relaxation_iterations;
         stepping.force_resolution     = force_resolution();
         stepping.unjammed_equilibrium = protocol.unjammed_equilibrium;
+        stepping.resolved_history     = protocol.resolved_history;
       }
     stepper = std::make_unique<LoadStepper>(model, equilibrium, stepping);
   }

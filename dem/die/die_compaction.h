@@ -68,6 +68,12 @@ namespace compax::dem
     /// (LoadSteppingOptions::unjammed_equilibrium).
     UnjammedEquilibrium unjammed_equilibrium
       = UnjammedEquilibrium::balanced_lbfgs;
+    /// Bonded path: true, a contact whose force is not above
+    /// force_resolution() keeps its internal variables when Eq. (13) is
+    /// applied (LoadSteppingOptions::resolved_history); false, Eq. (13)
+    /// applies at every positive overlap of a converged state, however
+    /// small its force.
+    bool resolved_history = true;
     /// Elastic frictionless spheres instead of the ContactModel's bonded
     /// elasto-plastic law: Hertz, or the nonlocal contact formulation of
     /// Gonzalez & Cuitino 2012 (elastic->nonlocal), stepped by an

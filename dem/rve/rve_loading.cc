@@ -74,7 +74,8 @@ namespace compax::dem
     PeriodicBedSystem system(bed, model, assembler);
     // The bonded path resolves forces as the die does; the frozen-history
     // path keeps its former rule (every force resolved).
-    const double resolution = force_resolution(bed);
+    const double resolution         = force_resolution(bed);
+    const double history_resolution = opts.resolved_history ? resolution : 0.0;
     if (unjammed)
       {
         // A balanced relaxation stops where Newton would: at the relative
@@ -124,7 +125,7 @@ namespace compax::dem
                 bed = saved;
                 return false;
               }
-            commit(bed, p, resolution, total);
+            commit(bed, p, history_resolution, total);
             total.relaxed = true;
             return true;
           }
@@ -140,7 +141,7 @@ namespace compax::dem
         bed = saved;
         return false;
       }
-    commit(bed, mean_pressure(bed), frozen ? 0.0 : resolution, total);
+    commit(bed, mean_pressure(bed), frozen ? 0.0 : history_resolution, total);
     total.relaxed = false;
     return true;
   }

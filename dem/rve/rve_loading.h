@@ -71,6 +71,10 @@ namespace compax::dem
     /// path this force is also the force resolution of Eq. (13) (the die's
     /// DieCompaction::force_resolution()).
     double force_floor_fraction = 1e-2;
+    /// Bonded path: false, Eq. (13) applies at every positive overlap of a
+    /// converged state, however small its force (the die's
+    /// DieProtocol::resolved_history).
+    bool resolved_history = true;
   };
 
   /// Outcome of one macroscopic step (possibly several sub-steps).

@@ -5,6 +5,8 @@
 
 #include "dem/contact/bonded_elastoplastic.h"
 #include "dem/contact/pair_properties.h"
+#include "dem/contact/particle_law.h"
+#include "dem/solver/history_update.h"
 
 #include <gtest/gtest.h>
 
@@ -324,4 +326,32 @@ TEST(BondedElastoplastic, HistoryFollowsEquation13)
   h = law.updated_history(25e-9, h);
   EXPECT_DOUBLE_EQ(h.a_p, law.plastic_radius(25e-9));
   EXPECT_DOUBLE_EQ(h.a_B, h.a_p);
+}
+
+TEST(BondedElastoplastic, ForceResolutionDecidesWhetherEquation13Applies)
+{
+  // History update = resolved-forces against every-contact: a contact that
+  // loads plastically with |P| at or below the resolution keeps its virgin
+  // internal variables; resolution 0 (every-contact) applies Eq. 13, a_B =
+  // a_p = a(gamma). Breakage applies at any force.
+  const ParticleLaw law   = du_on_flat();
+  const double      gamma = 5e-9;
+  const double      P     = std::abs(law_response(law, gamma, {}).force);
+  ASSERT_GT(P, 0.0);
+  ContactHistory resolved;
+  BondChanges    changes;
+  update_history(law, gamma, resolved, changes, 1.01 * P);
+  EXPECT_EQ(resolved, ContactHistory{});
+  EXPECT_EQ(changes.formed, 0u);
+
+  ContactHistory every;
+  update_history(law, gamma, every, changes, 0.0);
+  EXPECT_DOUBLE_EQ(every.a_p, du_on_flat().plastic_radius(gamma));
+  EXPECT_DOUBLE_EQ(every.a_B, every.a_p);
+  EXPECT_EQ(changes.formed, 1u);
+
+  // Above the force the resolution no longer holds the update back.
+  ContactHistory above;
+  update_history(law, gamma, above, changes, 0.99 * P);
+  EXPECT_EQ(above, every);
 }
