@@ -333,7 +333,7 @@ TEST(BondedElastoplastic, ForceResolutionDecidesWhetherEquation13Applies)
   // History update = resolved-forces against every-contact: a contact that
   // loads plastically with |P| at or below the resolution keeps its virgin
   // internal variables; resolution 0 (every-contact) applies Eq. 13, a_B =
-  // a_p = a(gamma). Breakage applies at any force.
+  // a_p = a(gamma).
   const ParticleLaw law   = du_on_flat();
   const double      gamma = 5e-9;
   const double      P     = std::abs(law_response(law, gamma, {}).force);
@@ -350,7 +350,7 @@ TEST(BondedElastoplastic, ForceResolutionDecidesWhetherEquation13Applies)
   EXPECT_DOUBLE_EQ(every.a_B, every.a_p);
   EXPECT_EQ(changes.formed, 1u);
 
-  // Above the force the resolution no longer holds the update back.
+  // A resolution below |P| does not hold the update back.
   ContactHistory above;
   update_history(law, gamma, above, changes, 0.99 * P);
   EXPECT_EQ(above, every);
