@@ -44,33 +44,73 @@ namespace compax::dem
       double          stiffness;    ///< |k_n| + 3.5 k_t for the time step
     };
 
-    /// Normal law, dashpots, Coulomb-limited Mindlin spring, rolling
-    /// torque. Updates delta_max and the tangential spring xi.
-    inline ContactOutput
-    resolve(const ContactInput                        &c,
-            const MulticontactAdhesiveLaw::Parameters &law_parameters,
-            const bool                                 friction,
-            const double                               dt,
-            double                                    &delta_max,
-            Eigen::Vector3d                           &xi)
+    /// The normal law's part of a contact at one evaluation.
+    struct NormalResponse
     {
-      const MulticontactAdhesiveLaw law(c.R, c.E, law_parameters);
-      const ContactResponse         r = law.response(c.delta, delta_max, c.P);
-      delta_max                       = std::max(delta_max, c.delta);
+      /// Force of the law, positive repulsive [N].
+      double force;
+      /// Stiffness that sets the dashpot, 2 zeta sqrt(m k) [N/m].
+      double dashpot_stiffness;
+      /// Stiffness that bounds the time step [N/m].
+      double step_stiffness;
+    };
 
-      const double root = std::sqrt(c.R * c.delta);
-      const double S_n  = 2.0 * c.E * root;
+    /// The multi-contact law (Eqs. 6-14); delta_max follows the overlap.
+    inline NormalResponse
+    multicontact_response(const ContactInput                        &c,
+                          const MulticontactAdhesiveLaw::Parameters &law,
+                          ContactHistory                            &history)
+    {
+      const MulticontactAdhesiveLaw contact_law(c.R, c.E, law);
+      const ContactResponse         r
+        = contact_law.response(c.delta, history.delta_max, c.P);
+      history.delta_max = std::max(history.delta_max, c.delta);
+      return {r.force,
+              2.0 * c.E * std::sqrt(c.R * c.delta),
+              std::abs(r.stiffness)};
+    }
+
+    /**
+     * A particle law: force at the current history, then the history of
+     * this state (updated_history). The step is bounded by the stiffer of
+     * the current branch and the one the contact would unload along.
+     */
+    inline NormalResponse
+    particle_law_response(const ParticleLaw &law,
+                          const double       delta,
+                          ContactHistory    &history)
+    {
+      const ContactResponse r = law_response(law, delta, history);
+      const double unloading  = unloading_stiffness(law, delta, history);
+      history                 = updated_history(law, delta, history);
+      const double k          = std::abs(r.stiffness);
+      return {r.force, k, std::max(k, std::abs(unloading))};
+    }
+
+    /// Dashpot, Coulomb-limited Mindlin spring (none at a non-positive
+    /// overlap, where a bonded contact pulls), rolling torque around the
+    /// normal force @p normal. Updates the tangential spring xi.
+    inline ContactOutput
+    resolve(const ContactInput   &c,
+            const NormalResponse &normal,
+            const bool            friction,
+            const double          dt,
+            Eigen::Vector3d      &xi)
+    {
+      const double root = std::sqrt(c.R * std::max(c.delta, 0.0));
       const double S_t  = 8.0 * c.G * root;
       const double v_n  = c.v_rel.dot(c.n); // > 0 separating
-      const double F_n  = r.force - 2.0 * c.zeta * std::sqrt(c.m * S_n) * v_n;
+      const double F_n
+        = normal.force
+          - 2.0 * c.zeta * std::sqrt(c.m * normal.dashpot_stiffness) * v_n;
 
       ContactOutput out;
-      out.normal_force = r.force;
-      out.stiffness    = std::abs(r.stiffness);
+      out.normal_force = normal.force;
+      out.stiffness    = normal.step_stiffness;
       out.force_on_j   = F_n * c.n;
       out.torque_i.setZero();
       out.torque_j.setZero();
-      if (!friction || (c.mu <= 0.0 && c.mu_r <= 0.0))
+      if (!friction || (c.mu <= 0.0 && c.mu_r <= 0.0) || c.delta <= 0.0)
         {
           xi.setZero();
           return out;
@@ -86,7 +126,7 @@ namespace compax::dem
       xi += v_t * dt;
       const double    gamma_t = 2.0 * c.zeta * std::sqrt(c.m * S_t);
       Eigen::Vector3d F_t     = -S_t * xi - gamma_t * v_t;
-      const double    limit   = c.mu * std::max(r.force, 0.0);
+      const double    limit   = c.mu * std::max(normal.force, 0.0);
       const double    F_t_abs = F_t.norm();
       if (F_t_abs > limit)
         {
@@ -104,7 +144,7 @@ namespace compax::dem
       const double w = c.w_rel.norm();
       if (c.mu_r > 0.0 && w > 0.0)
         {
-          const double T = std::min(c.mu_r * c.R * std::max(r.force, 0.0),
+          const double T = std::min(c.mu_r * c.R * std::max(normal.force, 0.0),
                                     dt > 0.0 ? w * c.I / dt : 0.0);
           const Eigen::Vector3d torque = (T / w) * c.w_rel;
           out.torque_i -= torque;
@@ -179,6 +219,8 @@ namespace compax::dem
     p.stress.push_back(Eigen::Matrix3d::Zero());
     p.pressure.push_back(0.0);
     p.kinematic.push_back(0);
+    if (model)
+      wall_laws.push_back(model->wall_law(0, radius));
     walls.resize(2 * p.size());
     stiffness_sum.resize(p.size());
     set_radius(p.size() - 1, radius);
@@ -198,6 +240,11 @@ namespace compax::dem
     p.mass[i]            = m;
     p.inverse_mass[i]    = 1.0 / m;
     p.inverse_inertia[i] = 1.0 / (0.4 * m * radius * radius);
+    if (model)
+      {
+        wall_laws[i] = model->wall_law(0, radius);
+        list_valid   = false; // the pair laws change with the radius
+      }
   }
 
   void
@@ -227,16 +274,29 @@ namespace compax::dem
   }
 
   void
+  ExplicitDem::use_contact_model(const ContactModel &contact_model)
+  {
+    model.emplace(contact_model);
+    wall_laws.clear();
+    for (const double r : p.radius)
+      wall_laws.push_back(model->wall_law(0, r));
+    pairs.clear();
+    reset_contact_history();
+    list_valid   = false;
+    forces_valid = false;
+  }
+
+  void
   ExplicitDem::reset_contact_history()
   {
     for (auto &c : pairs)
       {
-        c.delta_max = 0.0;
+        c.history = ContactHistory{};
         c.tangential.setZero();
       }
     for (auto &w : walls)
       {
-        w.delta_max = 0.0;
+        w.history = ContactHistory{};
         w.tangential.setZero();
       }
   }
@@ -293,8 +353,10 @@ namespace compax::dem
     grid.find_pairs(
       periodic_cell, p.position, p.radius, skin_at_build, candidates);
 
-    // Carry the histories over: both lists are sorted by (i, j, image).
+    // Carry the histories (and laws) over: both lists are sorted by
+    // (i, j, image).
     next_pairs.resize(candidates.size());
+    next_pair_laws.clear();
     std::size_t old = 0;
     for (std::size_t k = 0; k < candidates.size(); ++k)
       {
@@ -304,23 +366,30 @@ namespace compax::dem
         s.j                   = c.j;
         s.image               = c.image;
         s.offset              = periodic_cell.image_offset(c.image);
-        s.delta_max           = 0.0;
+        s.history             = ContactHistory{};
         s.tangential.setZero();
         s.overlap      = 0.0;
         s.normal_force = 0.0;
         while (old < pairs.size()
                && ImagePair{pairs[old].i, pairs[old].j, pairs[old].image} < c)
           ++old;
-        if (old < pairs.size() && pairs[old].i == c.i && pairs[old].j == c.j
-            && pairs[old].image == c.image)
+        const bool kept = old < pairs.size() && pairs[old].i == c.i
+                          && pairs[old].j == c.j && pairs[old].image == c.image;
+        if (kept)
           {
-            s.delta_max    = pairs[old].delta_max;
+            s.history      = pairs[old].history;
             s.tangential   = pairs[old].tangential;
             s.overlap      = pairs[old].overlap;
             s.normal_force = pairs[old].normal_force;
           }
+        if (model)
+          next_pair_laws.push_back(
+            kept && old < pair_laws.size()
+              ? pair_laws[old]
+              : model->pair_law(0, p.radius[c.i], 0, p.radius[c.j]));
       }
     pairs.swap(next_pairs);
+    pair_laws.swap(next_pair_laws);
     position_at_build = p.position;
     radius_at_build   = p.radius;
     list_valid        = true;
@@ -341,20 +410,26 @@ namespace compax::dem
     plates[0].force.setZero();
     plates[1].force.setZero();
     const auto &law = mat.normal_law;
+    // A contact apart acts only if its law keeps internal variables there
+    // (a bonded bridge); the multi-contact law forgets them.
+    const auto acts_apart = [&](const ContactHistory &history) {
+      return model && !(history == ContactHistory{});
+    };
 
     // Particle-particle contacts.
-    for (DynamicPairContact &c : pairs)
+    for (std::size_t k = 0; k < pairs.size(); ++k)
       {
+        DynamicPairContact   &c = pairs[k];
         const std::uint32_t   i = c.i, j = c.j;
         const Eigen::Vector3d d  = p.position[j] - p.position[i] + c.offset;
         const double          Rs = p.radius[i] + p.radius[j];
         const double          d2 = d.squaredNorm();
-        if (d2 >= Rs * Rs)
+        if (d2 >= Rs * Rs && !acts_apart(c.history))
           {
             // Contact lost (or not yet made): no history.
             c.overlap      = Rs - std::sqrt(d2);
             c.normal_force = 0.0;
-            c.delta_max    = 0.0;
+            c.history      = ContactHistory{};
             c.tangential.setZero();
             continue;
           }
@@ -378,8 +453,11 @@ namespace compax::dem
         in.mu    = mat.particle_particle.sliding_friction;
         in.mu_r  = mat.particle_particle.rolling_friction;
 
+        const NormalResponse normal
+          = model ? particle_law_response(pair_laws[k], in.delta, c.history)
+                  : multicontact_response(in, law, c.history);
         const ContactOutput out
-          = resolve(in, law, friction, h, c.delta_max, c.tangential);
+          = resolve(in, normal, friction, h, c.tangential);
         c.overlap      = in.delta;
         c.normal_force = out.normal_force;
 
@@ -403,11 +481,11 @@ namespace compax::dem
             const double  gap   = w == 0 ? p.position[i][2] - plates[0].position
                                          : plates[1].position - p.position[i][2];
             const double  delta = p.radius[i] - gap;
-            if (delta <= 0.0)
+            if (delta <= 0.0 && !acts_apart(c.history))
               {
                 c.overlap      = delta;
                 c.normal_force = 0.0;
-                c.delta_max    = 0.0;
+                c.history      = ContactHistory{};
                 c.tangential.setZero();
                 continue;
               }
@@ -429,8 +507,11 @@ namespace compax::dem
             in.zeta  = zeta_pw;
             in.mu    = mat.particle_wall.sliding_friction;
             in.mu_r  = mat.particle_wall.rolling_friction;
+            const NormalResponse normal
+              = model ? particle_law_response(wall_laws[i], delta, c.history)
+                      : multicontact_response(in, law, c.history);
             const ContactOutput out
-              = resolve(in, law, friction, h, c.delta_max, c.tangential);
+              = resolve(in, normal, friction, h, c.tangential);
             c.overlap      = delta;
             c.normal_force = out.normal_force;
             plates[w].force += out.force_on_j;
@@ -503,6 +584,9 @@ namespace compax::dem
   double
   ExplicitDem::elastic_energy() const
   {
+    if (model)
+      throw std::logic_error("ExplicitDem::elastic_energy: the laws of a "
+                             "ContactModel declare no stored energy");
     double e = 0.0;
     for (const DynamicPairContact &c : pairs)
       if (c.overlap > 0.0)
@@ -510,7 +594,7 @@ namespace compax::dem
           const double R
             = p.radius[c.i] * p.radius[c.j] / (p.radius[c.i] + p.radius[c.j]);
           const MulticontactAdhesiveLaw law(R, E_pp, mat.normal_law);
-          e += normal_energy(law, c.overlap, c.delta_max);
+          e += normal_energy(law, c.overlap, c.history.delta_max);
           const double S_t = 8.0 * G_pp * std::sqrt(R * c.overlap);
           e += 0.5 * S_t * c.tangential.squaredNorm();
         }
@@ -524,7 +608,7 @@ namespace compax::dem
             const MulticontactAdhesiveLaw law(p.radius[i],
                                               E_pw,
                                               mat.normal_law);
-            e += normal_energy(law, c.overlap, c.delta_max);
+            e += normal_energy(law, c.overlap, c.history.delta_max);
             const double S_t = 8.0 * G_pw * std::sqrt(p.radius[i] * c.overlap);
             e += 0.5 * S_t * c.tangential.squaredNorm();
           }

@@ -1,13 +1,17 @@
 #pragma once
 
+#include "dem/contact/contact_response.h"
+#include "dem/contact/particle_law.h"
 #include "dem/dynamics/dem_material.h"
 #include "dem/periodic/periodic_cell.h"
 #include "dem/periodic/periodic_pairs.h"
+#include "dem/solver/contact_model.h"
 
 #include <Eigen/Core>
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace compax::dem
@@ -75,8 +79,9 @@ namespace compax::dem
 
   /**
    * One particle-particle contact candidate of the Verlet list with its
-   * history (delta_max of Eq. 11, the tangential spring of Eq. 4) and the
-   * values of the last force evaluation.
+   * history (the normal law's internal variables, e.g. delta_max of
+   * Eq. 11; the tangential spring of Eq. 4) and the values of the last
+   * force evaluation.
    */
   struct DynamicPairContact
   {
@@ -85,8 +90,9 @@ namespace compax::dem
     LatticeImage  image;
     /// H n, the translation of j's image [m].
     Eigen::Vector3d offset;
-    /// Largest overlap since the contact formed [m].
-    double delta_max;
+    /// Internal variables of the normal law (delta_max [m] of the
+    /// multi-contact law; those of the ContactModel's law).
+    ContactHistory history;
     /// Accumulated tangential displacement xi [m] (F_t = -k_t xi - ...).
     Eigen::Vector3d tangential;
     /// Overlap of the last evaluation, <= 0 when apart [m].
@@ -98,7 +104,7 @@ namespace compax::dem
   /// A particle's contact with one plate: history and last values.
   struct PlateContact
   {
-    double          delta_max    = 0.0;
+    ContactHistory  history;
     Eigen::Vector3d tangential   = Eigen::Vector3d::Zero();
     double          overlap      = 0.0;
     double          normal_force = 0.0;
@@ -131,6 +137,14 @@ namespace compax::dem
    *
    * Plates have infinite radius and the wall elastic constants; the wall
    * is the contact partner "j" (a rigid body moving with the plate).
+   *
+   * Any particle law instead of the multi-contact one: use_contact_model()
+   * takes the normal force of every contact from a ContactModel, the same
+   * interface through which the static die and periodic-cell solvers
+   * evaluate their laws (the bonded law of Gonzalez 2018 or a registered
+   * law without context, e.g. Hertz or Walton-Braun). Each time step is a
+   * state of the dynamics, so the law's updated_history() is applied
+   * after every evaluation.
    */
   class ExplicitDem
   {
@@ -203,6 +217,26 @@ namespace compax::dem
     void
     set_normal_law(const MulticontactAdhesiveLaw::Parameters &law);
 
+    /**
+     * Normal forces from @p model's laws between particles of its material
+     * 0 (ContactModel::pair_law) and against rigid plates
+     * (ContactModel::wall_law) instead of the multi-contact law; the
+     * DemMaterial keeps the masses, the tangential springs, the dashpots
+     * (on the law's stiffness dP/dgamma) and the Rayleigh step. A contact
+     * keeps its internal variables while it stays in the Verlet list, so
+     * a bonded pair pulled apart carries its bridge's tension (overlap
+     * below 0) until the law breaks it. Forgets every contact history.
+     */
+    void
+    use_contact_model(const ContactModel &model);
+
+    /// Whether the normal forces come from a ContactModel.
+    bool
+    uses_contact_model() const
+    {
+      return model.has_value();
+    }
+
     /// Switches sliding and rolling friction on or off.
     void
     set_friction(bool enabled)
@@ -274,7 +308,8 @@ namespace compax::dem
      * k2* [2/5 (delta^{5/2} - delta_0^{5/2}) - x_0 (delta - delta_0)]
      * (2/5 k1 delta^{5/2} for a Hertz contact), plus k_t |xi|^2 / 2 of the
      * tangential spring. The multi-contact term is not a potential and is
-     * left out.
+     * left out. Throws std::logic_error with a ContactModel, whose laws
+     * declare no stored energy.
      */
     double
     elastic_energy() const;
@@ -330,6 +365,13 @@ namespace compax::dem
 
     // Pair constants.
     double E_pp, G_pp, E_pw, G_pw, zeta_pp, zeta_pw;
+
+    /// The particle laws, if they replace the multi-contact law; then
+    /// pair_laws[k] belongs to pairs[k] and wall_laws[i] to particle i.
+    std::optional<ContactModel> model;
+    std::vector<ParticleLaw>    pair_laws;
+    std::vector<ParticleLaw>    next_pair_laws;
+    std::vector<ParticleLaw>    wall_laws;
 
     // Verlet list.
     PeriodicCellGrid                grid;
