@@ -59,6 +59,7 @@ namespace compax::coupling
       visit(r.rho_interior);
       visit(r.sigma_zz_interior);
       visit(r.sigma_rr_interior);
+      visit(r.coordination_interior);
       // Not the timing (wall_seconds): the same study gives the same
       // checkpoint.
     }

@@ -251,6 +251,21 @@ namespace compax::coupling
     declare_history_update(prm,
                            "1e-2 x 0.5 MPa on a mean cross-section pi R^2, "
                            "7.6e-4 N for R = 220 um");
+    prm.declare_entry(
+      "Unjammed predictor",
+      "secant",
+      dealii::Patterns::Selection("secant|affine"),
+      "Bonded path (Consolidation = none) only: where a step starts while "
+      "the punches carry less than 0.5 MPa. A loose bed has many balanced "
+      "states (every arrangement without overlaps), and the minimiser "
+      "finds the one nearest to where the step starts, so this choice "
+      "changes where the bed jams. secant (default): every particle moves "
+      "on by its displacement of the last step, scaled to the punch's, "
+      "like a momentum (the predictor of the jammed steps, where it only "
+      "saves iterations). affine: the heights are mapped with the punch "
+      "gap, the uniform strain from which the RVE's cell starts each step. "
+      "Measured on 1500 spheres of Material 1 (README, The loose "
+      "regime): affine jams 0.005 earlier and runs 15 % faster.");
     prm.declare_entry("Maximum ejection steps",
                       "40",
                       dealii::Patterns::Integer(1, 100000),
@@ -438,7 +453,9 @@ namespace compax::coupling
     protocol.consolidate        = prm.get("Consolidation") == "frozen-history";
     protocol.unjammed_equilibrium
       = dem::parse_unjammed_equilibrium(prm.get("Unjammed equilibrium"));
-    protocol.resolved_history    = get_resolved_history(prm);
+    protocol.resolved_history = get_resolved_history(prm);
+    protocol.secant_predictor_unjammed
+      = prm.get("Unjammed predictor") == "secant";
     protocol.checkpoint_interval = prm.get_integer("Checkpoint interval");
     protocol.stop_after      = prm.get_integer("Stop after compaction steps");
     const std::string resume = prm.get("Resume from");

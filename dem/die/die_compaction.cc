@@ -193,13 +193,14 @@ namespace compax::dem
     LoadSteppingOptions stepping;
     if (!protocol.consolidate)
       {
-        const ConsolidationOptions &c = protocol.consolidation;
-        stepping.jamming_pressure     = c.jamming_pressure;
-        stepping.unjammed_tolerance   = c.relative_tolerance;
-        stepping.unjammed_iterations  = c.max_relaxation_iterations;
-        stepping.force_resolution     = force_resolution();
-        stepping.unjammed_equilibrium = protocol.unjammed_equilibrium;
-        stepping.resolved_history     = protocol.resolved_history;
+        const ConsolidationOptions &c      = protocol.consolidation;
+        stepping.jamming_pressure          = c.jamming_pressure;
+        stepping.unjammed_tolerance        = c.relative_tolerance;
+        stepping.unjammed_iterations       = c.max_relaxation_iterations;
+        stepping.force_resolution          = force_resolution();
+        stepping.unjammed_equilibrium      = protocol.unjammed_equilibrium;
+        stepping.resolved_history          = protocol.resolved_history;
+        stepping.secant_predictor_unjammed = protocol.secant_predictor_unjammed;
       }
     stepper = std::make_unique<LoadStepper>(model, equilibrium, stepping);
   }
@@ -282,18 +283,19 @@ namespace compax::dem
                          protocol.interior_wall_distance * diameter,
                          elastic ? 0.0 : force_resolution(),
                          protocol.interior_min_extent * diameter);
-    d.rho_interior       = interior.relative_density;
-    d.sigma_zz_interior  = interior.sigma_zz;
-    d.sigma_rr_interior  = interior.sigma_rr;
-    d.bonds_formed       = r.bonds.formed;
-    d.bonds_broken       = r.bonds.broken;
-    d.residual           = r.last.relative_residual;
-    d.mean_contact_force = s.mean_force;
-    d.iterations         = r.iterations;
-    d.cg_iterations      = r.cg_iterations;
-    d.cutbacks           = r.cutbacks;
-    d.relaxed            = r.relaxed ? 1 : 0;
-    d.wall_seconds       = now() - start_time;
+    d.rho_interior          = interior.relative_density;
+    d.sigma_zz_interior     = interior.sigma_zz;
+    d.sigma_rr_interior     = interior.sigma_rr;
+    d.coordination_interior = interior.coordination_number;
+    d.bonds_formed          = r.bonds.formed;
+    d.bonds_broken          = r.bonds.broken;
+    d.residual              = r.last.relative_residual;
+    d.mean_contact_force    = s.mean_force;
+    d.iterations            = r.iterations;
+    d.cg_iterations         = r.cg_iterations;
+    d.cutbacks              = r.cutbacks;
+    d.relaxed               = r.relaxed ? 1 : 0;
+    d.wall_seconds          = now() - start_time;
     return d;
   }
 
@@ -733,7 +735,7 @@ namespace compax::dem
            "bonds_formed,bonds_broken,elastic_recovery_rho,"
            "elastic_recovery_H,residual_radial_pressure,ejection_pressure,"
            "residual,iterations,cg_iterations,cutbacks,relaxed,rho_interior,"
-           "sigma_zz_interior,sigma_rr_interior\n";
+           "sigma_zz_interior,sigma_rr_interior,coordination_interior\n";
   }
 
   void
@@ -752,7 +754,7 @@ namespace compax::dem
         << r.ejection_pressure << ',' << r.residual << ',' << r.iterations
         << ',' << r.cg_iterations << ',' << r.cutbacks << ',' << r.relaxed
         << ',' << r.rho_interior << ',' << r.sigma_zz_interior << ','
-        << r.sigma_rr_interior << '\n';
+        << r.sigma_rr_interior << ',' << r.coordination_interior << '\n';
     out.precision(old);
   }
 } // namespace compax::dem

@@ -68,6 +68,10 @@ namespace compax::dem
     /// (LoadSteppingOptions::unjammed_equilibrium).
     UnjammedEquilibrium unjammed_equilibrium
       = UnjammedEquilibrium::balanced_lbfgs;
+    /// Bonded path: the predictor of an unjammed step is the secant one
+    /// (true) or the affine one (false)
+    /// (LoadSteppingOptions::secant_predictor_unjammed).
+    bool secant_predictor_unjammed = true;
     /// Bonded path: true, a contact whose force is not above
     /// force_resolution() keeps its internal variables when Eq. (13) is
     /// applied (LoadSteppingOptions::resolved_history); false, Eq. (13)
@@ -84,9 +88,9 @@ namespace compax::dem
     /// TrustRegionNewton).
     std::optional<ElasticDieOptions> elastic;
     /// The interior of the compact, whose stress and solid fraction die.csv
-    /// reports beside the die averages (measure_interior()): the particles
-    /// farther than this many mean particle diameters from the die wall and
-    /// both punches [-].
+    /// reports beside the die averages (measure_interior(), each sphere
+    /// weighted by its volume inside): the region farther than this many
+    /// mean particle diameters from the die wall and both punches [-].
     double interior_wall_distance = 2.0;
     /// ... measured only while it is at least this many mean diameters
     /// high and wide (measure_interior()'s min_extent) [-].
@@ -146,6 +150,8 @@ namespace compax::dem
     double rho_interior      = 0.0;
     double sigma_zz_interior = 0.0;
     double sigma_rr_interior = 0.0;
+    /// Coordination number of the interior (InteriorMeasures) [-].
+    double coordination_interior = 0.0;
     /// Wall time since the run (or its resumption) started [s]: not in
     /// die.csv (two runs of one study give the same file), the app writes
     /// it to timing.csv.

@@ -4,6 +4,8 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -12,6 +14,59 @@ namespace compax::dem
 {
   namespace
   {
+    /// Area [m^2] of the disc of radius a centred at distance s from the
+    /// centre of the disc of radius b >= a that lies inside the latter.
+    double
+    disc_overlap(const double a, const double s, const double b)
+    {
+      if (a <= 0.0 || s >= a + b)
+        return 0.0;
+      if (s <= b - a)
+        return pi * a * a;
+      if (s <= a - b)
+        return pi * b * b;
+      const double alpha = std::acos(
+        std::clamp((s * s + a * a - b * b) / (2.0 * s * a), -1.0, 1.0));
+      const double beta = std::acos(
+        std::clamp((s * s + b * b - a * a) / (2.0 * s * b), -1.0, 1.0));
+      const double k = (-s + a + b) * (s + a - b) * (s - a + b) * (s + a + b);
+      return a * a * alpha + b * b * beta - 0.5 * std::sqrt(std::max(k, 0.0));
+    }
+
+    /// Nodes and weights of the n-point Gauss-Legendre rule on [-1, 1]
+    /// (Newton's method on P_n from the Chebyshev guesses).
+    template <std::size_t n>
+    struct GaussLegendre
+    {
+      std::array<double, n> node{}, weight{};
+
+      GaussLegendre()
+      {
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            double x = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+            for (int it = 0; it < 100; ++it)
+              {
+                double p0 = 1.0, p1 = x;
+                for (std::size_t k = 2; k <= n; ++k)
+                  {
+                    const double p2
+                      = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+                    p0 = p1;
+                    p1 = p2;
+                  }
+                dp              = n * (x * p1 - p0) / (x * x - 1.0);
+                const double dx = p1 / dp;
+                x -= dx;
+                if (std::abs(dx) < 1e-15)
+                  break;
+              }
+            node[i]   = x;
+            weight[i] = 2.0 / ((1.0 - x * x) * dp * dp);
+          }
+      }
+    };
+
     /// The force of a contact below the resolution counts as zero, as in
     /// measure(): the solve determines no force there.
     double
@@ -21,11 +76,59 @@ namespace compax::dem
     }
   } // namespace
 
+  double
+  volume_in_die_region(const Eigen::Vector3d &x,
+                       const double           R,
+                       const double           r_max,
+                       const double           z_lower,
+                       const double           z_upper)
+  {
+    // Slices at heights t in [t1, t2] relative to the centre.
+    const double t1 = std::max(-R, z_lower - x.z());
+    const double t2 = std::min(R, z_upper - x.z());
+    const double s  = x.head<2>().norm();
+    if (!(t2 > t1) || s >= r_max + R)
+      return 0.0;
+    const auto slices
+      = [R](const double t) { return R * R * t - t * t * t / 3.0; };
+    if (s + R <= r_max)
+      return std::max(pi * (slices(t2) - slices(t1)), 0.0);
+
+    // The lens changes form where a slice's radius is |s - r_max|: split
+    // there so that each piece is smooth inside.
+    static const GaussLegendre<24> rule;
+    std::array<double, 4>          cut{t1, t2, t2, t2};
+    const double                   d = std::abs(s - r_max);
+    std::size_t                    n = 1;
+    if (d < R)
+      for (const double t :
+           {-std::sqrt(R * R - d * d), std::sqrt(R * R - d * d)})
+        if (t > t1 && t < t2)
+          cut[n++] = t;
+    cut[n]        = t2;
+    double volume = 0.0;
+    for (std::size_t piece = 0; piece < n; ++piece)
+      {
+        const double mid  = 0.5 * (cut[piece] + cut[piece + 1]);
+        const double half = 0.5 * (cut[piece + 1] - cut[piece]);
+        for (std::size_t q = 0; q < rule.node.size(); ++q)
+          {
+            const double t = mid + half * rule.node[q];
+            volume += half * rule.weight[q]
+                      * disc_overlap(std::sqrt(std::max(R * R - t * t, 0.0)),
+                                     s,
+                                     r_max);
+          }
+      }
+    return volume;
+  }
+
   InteriorMeasures
-  measure_interior(const Bed   &bed,
-                   const double wall_distance,
-                   const double resolution,
-                   const double min_extent)
+  measure_interior(const Bed              &bed,
+                   const double            wall_distance,
+                   const double            resolution,
+                   const double            min_extent,
+                   const InteriorWeighting weighting)
   {
     const ParticleSystem &p     = bed.particles;
     const DieWalls       &walls = bed.walls;
@@ -36,30 +139,39 @@ namespace compax::dem
     InteriorMeasures out;
     const double     nan = std::numeric_limits<double>::quiet_NaN();
     out.relative_density = out.sigma_zz = out.sigma_rr = nan;
+    out.coordination_number                            = nan;
     if (!(r_max > 0.0 && z_hi > z_lo) || z_hi - z_lo < min_extent
         || 2.0 * r_max < min_extent)
       return out;
 
-    std::vector<char> inside(p.size(), 0);
-    double            solid = 0.0;
+    // weight[i]: the part of sphere i the region counts (InteriorWeighting).
+    std::vector<double> weight(p.size(), 0.0);
+    double              solid = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i)
       {
         const Eigen::Vector3d &x = p.positions[i];
-        if (x.z() > z_lo && x.z() < z_hi && x.head<2>().norm() < r_max)
+        const double sphere      = 4.0 / 3.0 * pi * std::pow(p.radii[i], 3);
+        if (weighting == InteriorWeighting::volume_fraction)
+          weight[i]
+            = volume_in_die_region(x, p.radii[i], r_max, z_lo, z_hi) / sphere;
+        else
+          weight[i]
+            = x.z() > z_lo && x.z() < z_hi && x.head<2>().norm() < r_max;
+        if (weight[i] > 0.0)
           {
-            inside[i] = 1;
             ++out.particles;
-            solid += 4.0 / 3.0 * pi * std::pow(p.radii[i], 3);
+            solid += weight[i] * sphere;
           }
       }
     if (out.particles == 0)
       return out;
 
-    // sum_c (x_c - x_i) (x) f_c of each interior particle.
+    // sum_c (x_c - x_i) (x) f_c and the loaded contacts of each particle.
     std::vector<Eigen::Matrix3d> moment(p.size(), Eigen::Matrix3d::Zero());
+    std::vector<int>             loaded(p.size(), 0);
     for (const PairContact &c : bed.contacts.pairs)
       {
-        if (!inside[c.i] && !inside[c.j])
+        if (weight[c.i] == 0.0 && weight[c.j] == 0.0)
           continue;
         const double gamma = pair_overlap(p, c);
         const double P
@@ -71,14 +183,14 @@ namespace compax::dem
         // Contact point in the middle of the overlap; force on i is -P n.
         const double branch_i = p.radii[c.i] - 0.5 * gamma;
         const double branch_j = p.radii[c.j] - 0.5 * gamma;
-        if (inside[c.i])
-          moment[c.i] += (branch_i * n) * (-P * n).transpose();
-        if (inside[c.j])
-          moment[c.j] += (-branch_j * n) * (P * n).transpose();
+        moment[c.i] += (branch_i * n) * (-P * n).transpose();
+        moment[c.j] += (-branch_j * n) * (P * n).transpose();
+        ++loaded[c.i];
+        ++loaded[c.j];
       }
     for (const WallContact &c : bed.contacts.walls)
       {
-        if (!inside[c.i])
+        if (weight[c.i] == 0.0)
           continue;
         const WallGap g = walls.gap(c.wall, p.positions[c.i], p.radii[c.i]);
         const double  P
@@ -89,15 +201,19 @@ namespace compax::dem
         // The wall pushes the sphere along g.normal at x - (R - gamma/2) n.
         const double branch = p.radii[c.i] - 0.5 * g.overlap;
         moment[c.i] += (-branch * g.normal) * (P * g.normal).transpose();
+        ++loaded[c.i];
       }
 
     const double volume = pi * r_max * r_max * (z_hi - z_lo);
-    double       zz = 0.0, rr = 0.0;
+    double       zz = 0.0, rr = 0.0, contacts = 0.0, weights = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i)
       {
-        if (!inside[i])
+        if (weight[i] == 0.0)
           continue;
-        const Eigen::Matrix3d m = 0.5 * (moment[i] + moment[i].transpose());
+        contacts += weight[i] * loaded[i];
+        weights += weight[i];
+        const Eigen::Matrix3d m
+          = 0.5 * weight[i] * (moment[i] + moment[i].transpose());
         const Eigen::Vector2d r = p.positions[i].head<2>();
         const double          s = r.norm();
         zz += m(2, 2);
@@ -109,9 +225,10 @@ namespace compax::dem
         else
           rr += 0.5 * (m(0, 0) + m(1, 1));
       }
-    out.relative_density = solid / volume;
-    out.sigma_zz         = zz / volume;
-    out.sigma_rr         = rr / volume;
+    out.relative_density    = solid / volume;
+    out.sigma_zz            = zz / volume;
+    out.sigma_rr            = rr / volume;
+    out.coordination_number = contacts / weights;
     return out;
   }
 } // namespace compax::dem

@@ -98,6 +98,13 @@ namespace compax::dem
           break;
         }
     result.fit = fit_jamming(result.records, die.pressure_resolution());
+    std::vector<CompactionState> interior;
+    for (const DieRecord &r : result.records)
+      if (r.stage == "compaction" && r.step > 0
+          && std::isfinite(r.rho_interior))
+        interior.push_back(
+          {r.rho_interior, -r.sigma_zz_interior, r.coordination_interior});
+    result.interior_fit = fit_jamming(interior, die.pressure_resolution());
     return result;
   }
 
@@ -108,17 +115,22 @@ namespace compax::dem
   {
     const auto old = out.precision(10);
     out << "material,fracture_toughness,protocol,rho_c_Z,Z_c,theta,"
-           "rho_jammed,Z_jammed\n";
+           "rho_jammed,Z_jammed,rho_c_Z_interior,Z_c_interior,"
+           "theta_interior\n";
+    const auto write_fit = [&out](const std::optional<CoordinationFit> &fit) {
+      if (fit)
+        out << fit->rho_c << ',' << fit->Z_c << ',' << fit->theta;
+      else
+        out << ",,";
+    };
     for (const JammingResult &r : results)
       {
         out << material << ',' << r.study_case.fracture_toughness << ','
             << r.study_case.protocol_name() << ',';
-        if (r.fit)
-          out << r.fit->rho_c << ',' << r.fit->Z_c << ',' << r.fit->theta;
-        else
-          out << ",,";
-        out << ',' << r.jamming_density << ',' << r.jamming_coordination
-            << '\n';
+        write_fit(r.fit);
+        out << ',' << r.jamming_density << ',' << r.jamming_coordination << ',';
+        write_fit(r.interior_fit);
+        out << '\n';
       }
     out.precision(old);
   }

@@ -46,6 +46,10 @@ namespace compax::dem
   {
     JammingCase                    study_case;
     std::optional<CoordinationFit> fit;
+    /// Eq. (14) fitted to the die's interior (DieRecord::rho_interior,
+    /// -sigma_zz_interior, coordination_interior): the region a periodic
+    /// cell represents, without the looser wall layer.
+    std::optional<CoordinationFit> interior_fit;
     /// The compaction path (die.csv rows, no branches).
     std::vector<DieRecord> records;
     /// DieCompaction::jamming_density(): the first state whose punches
@@ -85,7 +89,9 @@ namespace compax::dem
   /// jamming.csv: material,fracture_toughness,protocol,rho_c_Z,Z_c,theta
   /// (Eq. 14; empty cells where it could not be fitted), then
   /// rho_jammed,Z_jammed (where the punches first carried the jamming
-  /// pressure; a measure that needs no fit).
+  /// pressure; a measure that needs no fit), then
+  /// rho_c_Z_interior,Z_c_interior,theta_interior (Eq. 14 of the
+  /// interior, JammingResult::interior_fit).
   void
   write_jamming_csv(std::ostream                     &out,
                     const std::string                &material,

@@ -199,8 +199,10 @@ namespace compax::dem
         nn += delta[k] * delta[k];
         oo += last_delta[k] * last_delta[k];
       }
+    const bool secant = stepping.secant_predictor
+                        && (stepping.secant_predictor_unjammed || loose != 1);
     const bool parallel
-      = stepping.secant_predictor && have_increment && nn > 0.0 && oo > 0.0
+      = secant && have_increment && nn > 0.0 && oo > 0.0
         && dot > 0.999 * std::sqrt(nn * oo) && next.die_present == w.die_present
         && last_die_present == w.die_present
         && last_increment.size()

@@ -17,6 +17,17 @@ namespace compax::dem
     /// Extrapolate the last converged sub-step (else affine heights).
     bool secant_predictor = true;
     /**
+     * ... also while the bed is unjammed (jamming_pressure). There the
+     * equilibrium is not unique (every overlap-free arrangement is one), so
+     * the predictor decides which one the minimiser finds: the secant
+     * predictor moves every particle on by the rearrangement of the last
+     * sub-step, like a momentum, and the affine one starts each sub-step
+     * from the punch's uniform strain, as the RVE's cell mapping does.
+     * Measured (README, The loose regime): the secant predictor jams a
+     * 1500-sphere Material 1 bed 0.005 later and costs 17 % more time.
+     */
+    bool secant_predictor_unjammed = true;
+    /**
      * Punch pressure below which the bed counts as unjammed [Pa]; 0: none
      * (every sub-step is solved by the trust-region Newton). While the bed
      * is unjammed (the punches of every converged state so far carried

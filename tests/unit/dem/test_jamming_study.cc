@@ -99,6 +99,7 @@ TEST(JammingStudy, ZeroToughnessKeepsMaterialsAndRemovesBridges)
   write_jamming_csv(csv, "m1", {r});
   EXPECT_EQ(csv.str(),
             "material,fracture_toughness,protocol,rho_c_Z,Z_c,theta,"
-            "rho_jammed,Z_jammed\n"
-            "m1,0,frozen-history,,,,0,0\n");
+            "rho_jammed,Z_jammed,rho_c_Z_interior,Z_c_interior,"
+            "theta_interior\n"
+            "m1,0,frozen-history,,,,0,0,,,\n");
 }
