@@ -6,6 +6,7 @@
 #include "dem/contact/pair_properties.h"
 #include "dem/dynamics/explicit_dem.h"
 #include "dem/dynamics/restitution_damping.h"
+#include "tests/support/binary_collision.h"
 
 #include <gtest/gtest.h>
 
@@ -15,32 +16,17 @@ using namespace compax::dem;
 
 namespace
 {
-  const double pi = std::acos(-1.0);
+
+  using compax::testing::big_cell;
+  using compax::testing::sphere_mass;
 
   DemMaterial
   elastic_material(const double restitution, const double friction = 0.0)
   {
-    DemMaterial m;
-    m.youngs_modulus    = 2.58e8;
-    m.poisson_ratio     = 0.3;
-    m.density           = 1541.1;
-    m.particle_particle = {restitution, friction, 0.0};
-    m.particle_wall     = {restitution, friction, 0.0};
-    return m;
-  }
-
-  /// A large cell, periodic in x and y, so that nothing wraps.
-  PeriodicCell
-  big_cell()
-  {
-    return PeriodicCell::box(Eigen::Vector3d(1e-2, 1e-2, 1e-2),
-                             {true, true, false});
-  }
-
-  double
-  sphere_mass(const double R, const double rho)
-  {
-    return rho * 4.0 / 3.0 * pi * R * R * R;
+    return compax::testing::collision_material(2.58e8,
+                                               0.3,
+                                               restitution,
+                                               friction);
   }
 
   /// Runs a head-on collision along x; returns the relative speeds before

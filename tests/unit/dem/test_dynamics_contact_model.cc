@@ -10,6 +10,7 @@
 
 #include "dem/contact/contact_law_registry.h"
 #include "dem/dynamics/explicit_dem.h"
+#include "tests/support/binary_collision.h"
 #include "tests/support/gonzalez_material1.h"
 #include "tests/support/walton_braun_model.h"
 
@@ -24,33 +25,23 @@ namespace material1 = compax::testing::material1;
 
 namespace
 {
-  const double pi      = std::acos(-1.0);
   const double density = 1541.1;
+
+  using compax::testing::big_cell;
 
   /// No dashpot, no friction: the contact law alone exchanges energy.
   DemMaterial
   undamped_material()
   {
-    DemMaterial m;
-    m.youngs_modulus    = material1::E;
-    m.poisson_ratio     = material1::nu;
-    m.density           = density;
-    m.particle_particle = {1.0, 0.0, 0.0};
-    m.particle_wall     = {1.0, 0.0, 0.0};
-    return m;
-  }
-
-  PeriodicCell
-  big_cell()
-  {
-    return PeriodicCell::box(Eigen::Vector3d(1e-2, 1e-2, 1e-2),
-                             {true, true, false});
+    return compax::testing::collision_material(material1::E,
+                                               material1::nu,
+                                               1.0);
   }
 
   double
   sphere_mass(const double R)
   {
-    return density * 4.0 / 3.0 * pi * R * R * R;
+    return compax::testing::sphere_mass(R, density);
   }
 
   /// A head-on collision of two spheres of radius R along x at relative
@@ -199,6 +190,10 @@ TEST(ExplicitDemContactModel, BondedCollisionSpendsAndReturnsTheLawsWork)
         c.delta_max);
       EXPECT_EQ(c.parted, returned > 0.0);
       if (c.parted)
-        EXPECT_NEAR(0.5 * m * c.v_after * c.v_after, returned, 1e-2 * returned);
+        {
+          EXPECT_NEAR(0.5 * m * c.v_after * c.v_after,
+                      returned,
+                      1e-2 * returned);
+        }
     }
 }
