@@ -13,8 +13,8 @@ namespace compax::coupling
    * compaction state of the particle die, the solid fraction and stress of
    * its interior (DieRecord::rho_interior, sigma_zz_interior,
    * sigma_rr_interior, the region farther than two diameters from every
-   * wall, measure_interior()) beside the RVE's stress along its uniaxial compaction path
-   * (database rows of path "compaction") interpolated at the
+   * wall, measure_interior()) beside the RVE's stress along its uniaxial
+   * compaction path (database rows of path "compaction") interpolated at the
    * interior's own solid fraction. The wall layer of a die is looser than
    * its interior, so the interior, not the die average, is what a periodic
    * cell represents.
