@@ -9,6 +9,7 @@ packages=(
   g++ make cmake pkg-config
   libdeal.ii-dev      # deal.II 9.4 with Trilinos, p4est, HDF5, MPI
   libeigen3-dev
+  libboost-math-dev   # Gauss-Legendre rules (dem, interior volumes)
   libhdf5-openmpi-dev
   openmpi-bin
   libgtest-dev

@@ -3,6 +3,7 @@
 #include "dem/numbers.h"
 
 #include <Eigen/Core>
+#include <boost/math/quadrature/gauss.hpp>
 
 #include <algorithm>
 #include <array>
@@ -33,40 +34,6 @@ namespace compax::dem
       return a * a * alpha + b * b * beta - 0.5 * std::sqrt(std::max(k, 0.0));
     }
 
-    /// Nodes and weights of the n-point Gauss-Legendre rule on [-1, 1]
-    /// (Newton's method on P_n from the Chebyshev guesses).
-    template <std::size_t n>
-    struct GaussLegendre
-    {
-      std::array<double, n> node{}, weight{};
-
-      GaussLegendre()
-      {
-        for (std::size_t i = 0; i < n; ++i)
-          {
-            double x = std::cos(pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
-            for (int it = 0; it < 100; ++it)
-              {
-                double p0 = 1.0, p1 = x;
-                for (std::size_t k = 2; k <= n; ++k)
-                  {
-                    const double p2
-                      = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-                    p0 = p1;
-                    p1 = p2;
-                  }
-                dp              = n * (x * p1 - p0) / (x * x - 1.0);
-                const double dx = p1 / dp;
-                x -= dx;
-                if (std::abs(dx) < 1e-15)
-                  break;
-              }
-            node[i]   = x;
-            weight[i] = 2.0 / ((1.0 - x * x) * dp * dp);
-          }
-      }
-    };
-
     /// The force of a contact below the resolution counts as zero, as in
     /// measure(): the solve determines no force there.
     double
@@ -95,31 +62,24 @@ namespace compax::dem
       return std::max(pi * (slices(t2) - slices(t1)), 0.0);
 
     // The lens changes form where a slice's radius is |s - r_max|: split
-    // there so that each piece is smooth inside.
-    static const GaussLegendre<24> rule;
-    std::array<double, 4>          cut{t1, t2, t2, t2};
-    const double                   d = std::abs(s - r_max);
-    std::size_t                    n = 1;
+    // there so that each piece is smooth inside (Gauss-Legendre, 25 points
+    // per piece, Boost.Math).
+    std::array<double, 4> cut{t1, t2, t2, t2};
+    const double          d = std::abs(s - r_max);
+    std::size_t           n = 1;
     if (d < R)
       for (const double t :
            {-std::sqrt(R * R - d * d), std::sqrt(R * R - d * d)})
         if (t > t1 && t < t2)
           cut[n++] = t;
-    cut[n]        = t2;
+    cut[n]                = t2;
+    const auto slice_area = [&](const double t) {
+      return disc_overlap(std::sqrt(std::max(R * R - t * t, 0.0)), s, r_max);
+    };
     double volume = 0.0;
     for (std::size_t piece = 0; piece < n; ++piece)
-      {
-        const double mid  = 0.5 * (cut[piece] + cut[piece + 1]);
-        const double half = 0.5 * (cut[piece + 1] - cut[piece]);
-        for (std::size_t q = 0; q < rule.node.size(); ++q)
-          {
-            const double t = mid + half * rule.node[q];
-            volume += half * rule.weight[q]
-                      * disc_overlap(std::sqrt(std::max(R * R - t * t, 0.0)),
-                                     s,
-                                     r_max);
-          }
-      }
+      volume += boost::math::quadrature::gauss<double, 25>::integrate(
+        slice_area, cut[piece], cut[piece + 1]);
     return volume;
   }
 

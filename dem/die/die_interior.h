@@ -81,7 +81,7 @@ namespace compax::dem
    * cylinder r < @p r_max (axis z through the origin),
    * @p z_lower < z < @p z_upper: the integral over the sphere's horizontal
    * slices of their overlap with the disc r < r_max (the lens of two
-   * circles), in closed form where no slice is cut and by 24-point
+   * circles), in closed form where no slice is cut and by 25-point
    * Gauss-Legendre quadrature where the cylinder cuts the sphere.
    */
   double
