@@ -242,8 +242,11 @@ namespace compax::dem
     p.inverse_inertia[i] = 1.0 / (0.4 * m * radius * radius);
     if (model)
       {
+        // The laws change with the radius: every pair law is built anew
+        // at the next neighbour update.
         wall_laws[i] = model->wall_law(0, radius);
-        list_valid   = false; // the pair laws change with the radius
+        laws_stale   = true;
+        list_valid   = false;
       }
   }
 
@@ -384,12 +387,13 @@ namespace compax::dem
           }
         if (model)
           next_pair_laws.push_back(
-            kept && old < pair_laws.size()
+            kept && !laws_stale && old < pair_laws.size()
               ? pair_laws[old]
               : model->pair_law(0, p.radius[c.i], 0, p.radius[c.j]));
       }
     pairs.swap(next_pairs);
     pair_laws.swap(next_pair_laws);
+    laws_stale        = false;
     position_at_build = p.position;
     radius_at_build   = p.radius;
     list_valid        = true;

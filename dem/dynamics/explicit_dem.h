@@ -372,6 +372,8 @@ namespace compax::dem
     std::vector<ParticleLaw>    pair_laws;
     std::vector<ParticleLaw>    next_pair_laws;
     std::vector<ParticleLaw>    wall_laws;
+    /// A radius changed since the pair laws were built.
+    bool laws_stale = false;
 
     // Verlet list.
     PeriodicCellGrid                grid;

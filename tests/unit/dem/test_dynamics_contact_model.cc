@@ -54,13 +54,22 @@ namespace
     bool parted = false;
   };
 
+  /// The spheres may be added with another radius @p added_as and grown
+  /// (or shrunk) to R before the collision.
   Collision
-  head_on(const ContactModel &model, const double R, const double v)
+  head_on(const ContactModel &model,
+          const double        R,
+          const double        v,
+          const double        added_as = 0.0)
   {
-    ExplicitDem dem(undamped_material(), big_cell());
+    ExplicitDem  dem(undamped_material(), big_cell());
+    const double R0 = added_as > 0.0 ? added_as : R;
     dem.use_contact_model(model);
-    dem.add_particle(Eigen::Vector3d(4e-3, 5e-3, 5e-3), R);
-    dem.add_particle(Eigen::Vector3d(4e-3 + 2.0 * R + 1e-7, 5e-3, 5e-3), R);
+    dem.add_particle(Eigen::Vector3d(4e-3, 5e-3, 5e-3), R0);
+    dem.add_particle(Eigen::Vector3d(4e-3 + 2.0 * R + 1e-7, 5e-3, 5e-3), R0);
+    dem.time_step(); // the neighbour list and the laws at radius R0
+    dem.set_radius(0, R);
+    dem.set_radius(1, R);
     auto &p       = dem.particles();
     p.velocity[0] = Eigen::Vector3d(0.5 * v, 0.0, 0.0);
     p.velocity[1] = Eigen::Vector3d(-0.5 * v, 0.0, 0.0);
@@ -104,16 +113,21 @@ TEST(ExplicitDemContactModel, HertzLawReachesHertzOverlapAndReboundsElastically)
   ASSERT_NE(hertz, nullptr);
   ContactModel model(material1::elastoplastic(), 0.0);
   model.use_registered_law(*hertz, {});
-  const double    R = material1::R, v = 0.2;
-  const Collision c = head_on(model, R, v);
+  const double R = material1::R, v = 0.2;
 
-  // 1/2 m* v^2 = 2/5 k delta_max^{5/2}, k = 4/3 E* sqrt(R/2).
+  // 1/2 m* v^2 = 2/5 k delta_max^{5/2}, k = 4/3 E* sqrt(R/2); also for
+  // spheres added at 0.9 R (already neighbours) and grown to R, whose laws
+  // must follow the radius.
   const double m = 0.5 * sphere_mass(R);
   const double E = material1::E / (2.0 * (1.0 - material1::nu * material1::nu));
   const double k = 4.0 / 3.0 * E * std::sqrt(0.5 * R);
   const double dm = std::pow(1.25 * m * v * v / k, 0.4);
-  EXPECT_NEAR(c.delta_max, dm, 2e-3 * dm);
-  EXPECT_NEAR(c.v_after, v, 1e-3 * v);
+  for (const double added_as : {R, 0.9 * R})
+    {
+      const Collision c = head_on(model, R, v, added_as);
+      EXPECT_NEAR(c.delta_max, dm, 2e-3 * dm) << "added as " << added_as;
+      EXPECT_NEAR(c.v_after, v, 1e-3 * v) << "added as " << added_as;
+    }
 }
 
 TEST(ExplicitDemContactModel, WaltonBraunRestitutionIsRootOfStiffnessRatio)
