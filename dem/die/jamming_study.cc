@@ -24,13 +24,20 @@ namespace compax::dem
 
   std::optional<CoordinationFit>
   fit_jamming(const std::vector<DieRecord> &records,
-              const double                  pressure_resolution)
+              const double                  pressure_resolution,
+              const DieRegion               region)
   {
+    const bool                   interior = region == DieRegion::interior;
     std::vector<CompactionState> states;
     for (const DieRecord &r : records)
-      if (r.stage == "compaction" && r.step > 0)
-        states.push_back(
-          {r.relative_density, r.upper_punch_pressure, r.coordination_number});
+      if (r.stage == "compaction" && r.step > 0
+          && (!interior || std::isfinite(r.rho_interior)))
+        states.push_back(interior ? CompactionState{r.rho_interior,
+                                                    -r.sigma_zz_interior,
+                                                    r.coordination_interior}
+                                  : CompactionState{r.relative_density,
+                                                    r.upper_punch_pressure,
+                                                    r.coordination_number});
     return fit_jamming(states, pressure_resolution);
   }
 
@@ -98,13 +105,9 @@ namespace compax::dem
           break;
         }
     result.fit = fit_jamming(result.records, die.pressure_resolution());
-    std::vector<CompactionState> interior;
-    for (const DieRecord &r : result.records)
-      if (r.stage == "compaction" && r.step > 0
-          && std::isfinite(r.rho_interior))
-        interior.push_back(
-          {r.rho_interior, -r.sigma_zz_interior, r.coordination_interior});
-    result.interior_fit = fit_jamming(interior, die.pressure_resolution());
+    result.interior_fit = fit_jamming(result.records,
+                                      die.pressure_resolution(),
+                                      DieRegion::interior);
     return result;
   }
 

@@ -17,14 +17,25 @@ namespace compax::dem
   jammed_compaction(const std::vector<DieRecord> &records,
                     double                        pressure_resolution);
 
+  /// Where in the die a jamming fit measures the bed.
+  enum class DieRegion
+  {
+    /// The whole bed: relative density, upper punch pressure, Z.
+    whole_bed,
+    /// The interior (DieRecord::rho_interior, -sigma_zz_interior,
+    /// coordination_interior), where a periodic cell compares.
+    interior
+  };
+
   /**
    * Eq. (14) of Gonzalez 2018, Z = Z_c + Z_0 (rho - rho_c_Z)^theta, fitted
-   * to jammed_compaction(). Empty with fewer than five jammed states or
-   * when the fit fails.
+   * to the jammed compaction states of @p region. Empty with fewer than
+   * five jammed states or when the fit fails.
    */
   std::optional<CoordinationFit>
   fit_jamming(const std::vector<DieRecord> &records,
-              double                        pressure_resolution);
+              double                        pressure_resolution,
+              DieRegion                     region = DieRegion::whole_bed);
 
   /// How one compaction of a jamming study treats bonding and the loose
   /// regime.

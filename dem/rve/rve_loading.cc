@@ -87,19 +87,18 @@ namespace compax::dem
         const bool balanced
           = lbfgs_minimiser
             || (!frozen && u == UnjammedEquilibrium::balanced_relaxation);
+        Relaxation      &minimiser = lbfgs_minimiser
+                                       ? static_cast<Relaxation &>(lbfgs)
+                                       : static_cast<Relaxation &>(fire);
         const FireResult f
-          = lbfgs_minimiser ? lbfgs.relax(system,
-                                          opts.equilibrium.force_tolerance,
-                                          opts.balanced_iterations,
-                                          balanced_force_floor(bed))
-            : balanced      ? fire.relax(system,
-                                    opts.equilibrium.force_tolerance,
-                                    opts.balanced_iterations,
-                                    balanced_force_floor(bed))
-                            : fire.relax(system,
-                                    opts.fire_tolerance,
-                                    opts.fire_iterations,
-                                    resolution);
+          = balanced ? minimiser.relax(system,
+                                       opts.equilibrium.force_tolerance,
+                                       opts.balanced_iterations,
+                                       balanced_force_floor(bed))
+                     : minimiser.relax(system,
+                                       opts.fire_tolerance,
+                                       opts.fire_iterations,
+                                       resolution);
         total.relaxation_iterations += f.iterations;
         total.relative_residual = f.relative_residual;
         if (frozen)

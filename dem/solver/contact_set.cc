@@ -81,12 +81,7 @@ namespace compax::dem
   {
     BondChanges changes
       = VerletList::update_histories(particles, die, resolution);
-    for (WallContact &c : walls)
-      update_history(c.law,
-                     contact_overlap(particles, die, c),
-                     c.history,
-                     changes,
-                     resolution);
+    update_histories_of(walls, particles, die, resolution, changes);
     return changes;
   }
 } // namespace compax::dem

@@ -1,8 +1,6 @@
 #include "dem/solver/fire_relaxation.h"
 
-#include "dem/solver/die_bed_system.h"
 #include "dem/solver/residual_norms.h"
-#include "dem/solver/stiffness_scaling.h"
 
 #include "dem/solver/trust_region_newton.h"
 
@@ -11,24 +9,6 @@
 
 namespace compax::dem
 {
-  void
-  FireRelaxation::update_masses(EquilibriumSystem &system)
-  {
-    sums = system.assemble(F, K);
-    inverse_diagonal_stiffness(K, system.n_particles(), inverse_mass);
-  }
-
-  FireResult
-  FireRelaxation::relax(Bed                &bed,
-                        const ContactModel &model,
-                        const double        target,
-                        const int           max_iterations,
-                        const double        force_floor)
-  {
-    DieBedSystem system(bed, model, assembler);
-    return relax(system, target, max_iterations, force_floor);
-  }
-
   FireResult
   FireRelaxation::relax(EquilibriumSystem &system,
                         const double       target,
@@ -50,7 +30,7 @@ namespace compax::dem
     FireResult result;
     double     dt = 0.1, alpha = alpha0;
     int        n_positive = 0;
-    update_masses(system);
+    assemble_inverse_diagonal(system, F, inverse_mass);
     ++result.assemblies;
     auto x = system.coordinates();
     for (int it = 0;; ++it)
@@ -95,7 +75,7 @@ namespace compax::dem
         x += dt * v;
         if (it % mass_interval == mass_interval - 1)
           {
-            update_masses(system);
+            assemble_inverse_diagonal(system, F, inverse_mass);
             ++result.assemblies;
           }
         else

@@ -1,25 +1,11 @@
 #pragma once
 
-#include "dem/solver/bed.h"
-#include "dem/solver/block_sparse_matrix.h"
-#include "dem/solver/contact_assembler.h"
-#include "dem/solver/equilibrium_system.h"
+#include "dem/solver/relaxation.h"
 
 #include <Eigen/Core>
 
 namespace compax::dem
 {
-  /// Outcome of a FIRE relaxation.
-  struct FireResult
-  {
-    bool        converged         = false;
-    int         iterations        = 0;
-    double      relative_residual = 0.0;
-    ContactSums sums;
-    /// Residual evaluations with the stiffness (mass updates).
-    int assemblies = 0;
-  };
-
   /**
    * Fast inertial relaxation (FIRE, Bitzek et al. 2006; semi-implicit
    * Euler) of a bed towards equilibrium at fixed walls and internal
@@ -36,35 +22,18 @@ namespace compax::dem
    * moves more than a tenth of the Verlet skin per iteration. Buffers are kept,
    * so repeated relaxations allocate nothing.
    */
-  class FireRelaxation
+  class FireRelaxation final : public Relaxation
   {
   public:
-    /**
-     * Relaxes until max_i |F_i| <= target_relative_residual times the mean
-     * contact force, or max_i |F_i| <= force_floor [N] (forces negligible
-     * in absolute terms), or max_iterations.
-     */
+    using Relaxation::relax;
+
     FireResult
     relax(EquilibriumSystem &system,
           double             target_relative_residual,
           int                max_iterations,
-          double             force_floor = 0.0);
-
-    /// The same for a die bed.
-    FireResult
-    relax(Bed                &bed,
-          const ContactModel &model,
-          double              target_relative_residual,
-          int                 max_iterations,
-          double              force_floor = 0.0);
+          double             force_floor = 0.0) override;
 
   private:
-    void
-    update_masses(EquilibriumSystem &system);
-
-    ContactAssembler  assembler;
-    BlockSparseMatrix K;
-    Eigen::VectorXd   F, v, inverse_mass;
-    ContactSums       sums;
+    Eigen::VectorXd F, v, inverse_mass;
   };
 } // namespace compax::dem

@@ -1,8 +1,6 @@
 #include "dem/solver/lbfgs_relaxation.h"
 
-#include "dem/solver/die_bed_system.h"
 #include "dem/solver/residual_norms.h"
-#include "dem/solver/stiffness_scaling.h"
 #include "dem/solver/trust_region_newton.h"
 
 #include <algorithm>
@@ -29,13 +27,6 @@ namespace compax::dem
       , rho(this->memory, 0.0)
       , alpha(this->memory, 0.0)
   {
-  }
-
-  void
-  LbfgsRelaxation::update_preconditioner(EquilibriumSystem &system)
-  {
-    sums = system.assemble(g, K);
-    inverse_diagonal_stiffness(K, system.n_particles(), inverse_diagonal);
   }
 
   void
@@ -76,17 +67,6 @@ namespace compax::dem
   }
 
   FireResult
-  LbfgsRelaxation::relax(Bed                &bed,
-                         const ContactModel &model,
-                         const double        target,
-                         const int           max_evaluations,
-                         const double        force_floor)
-  {
-    DieBedSystem system(bed, model, assembler);
-    return relax(system, target, max_evaluations, force_floor);
-  }
-
-  FireResult
   LbfgsRelaxation::relax(EquilibriumSystem &system,
                          const double       target,
                          const int          max_evaluations,
@@ -105,7 +85,7 @@ namespace compax::dem
     const double cap = system.skin();
 
     FireResult result;
-    update_preconditioner(system);
+    assemble_inverse_diagonal(system, g, inverse_diagonal);
     int evaluations = 1, accepted = 0;
     result.assemblies = 1;
     auto x            = system.coordinates();
@@ -124,7 +104,7 @@ namespace compax::dem
         if (accepted > 0 && accepted % preconditioner_interval == 0)
           {
             // The seed of H only: the stored pairs stay valid.
-            update_preconditioner(system);
+            assemble_inverse_diagonal(system, g, inverse_diagonal);
             ++evaluations;
             ++result.assemblies;
           }

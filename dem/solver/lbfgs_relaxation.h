@@ -1,10 +1,6 @@
 #pragma once
 
-#include "dem/solver/bed.h"
-#include "dem/solver/block_sparse_matrix.h"
-#include "dem/solver/contact_assembler.h"
-#include "dem/solver/equilibrium_system.h"
-#include "dem/solver/fire_relaxation.h"
+#include "dem/solver/relaxation.h"
 
 #include <Eigen/Core>
 
@@ -38,9 +34,11 @@ namespace compax::dem
    * moves more than the Verlet skin per trial point. Buffers are kept,
    * so repeated relaxations allocate nothing.
    */
-  class LbfgsRelaxation
+  class LbfgsRelaxation final : public Relaxation
   {
   public:
+    using Relaxation::relax;
+
     /// @param memory Number of correction pairs kept (m in Nocedal & Wright).
     explicit LbfgsRelaxation(int memory = 10);
 
@@ -54,21 +52,9 @@ namespace compax::dem
     relax(EquilibriumSystem &system,
           double             target_relative_residual,
           int                max_evaluations,
-          double             force_floor = 0.0);
-
-    /// The same for a die bed.
-    FireResult
-    relax(Bed                &bed,
-          const ContactModel &model,
-          double              target_relative_residual,
-          int                 max_evaluations,
-          double              force_floor = 0.0);
+          double             force_floor = 0.0) override;
 
   private:
-    /// Refreshes the preconditioner from the diagonal stiffness at x.
-    void
-    update_preconditioner(EquilibriumSystem &system);
-
     /// d = -H g by the two-loop recursion over the stored pairs.
     void
     search_direction();
@@ -83,9 +69,6 @@ namespace compax::dem
     int                          n_stored = 0, newest = -1;
     double                       scaling = 1.0;
 
-    ContactAssembler  assembler;
-    BlockSparseMatrix K;
-    Eigen::VectorXd   g, g_trial, d, x0, s, y, inverse_diagonal;
-    ContactSums       sums;
+    Eigen::VectorXd g, g_trial, d, x0, s, y, inverse_diagonal;
   };
 } // namespace compax::dem

@@ -74,18 +74,16 @@ namespace compax::dem
       = stepping.unjammed_equilibrium == UnjammedEquilibrium::balanced_lbfgs;
     const EquilibriumOptions &eq = newton.options();
     const auto                t0 = std::chrono::steady_clock::now();
-    const FireResult          f
-      = lbfgs_minimiser         ? lbfgs.relax(bed,
-                                      model,
-                                      eq.force_tolerance,
-                                      stepping.balanced_iterations,
-                                      eq.force_floor)
-        : balanced_relaxation() ? fire.relax(bed,
+    Relaxation &minimiser = lbfgs_minimiser ? static_cast<Relaxation &>(lbfgs)
+                                            : static_cast<Relaxation &>(fire);
+    const bool  balanced  = balanced_relaxation();
+    const FireResult f    = balanced
+                              ? minimiser.relax(bed,
                                              model,
                                              eq.force_tolerance,
                                              stepping.balanced_iterations,
                                              eq.force_floor)
-                                : fire.relax(bed,
+                              : minimiser.relax(bed,
                                              model,
                                              stepping.unjammed_tolerance,
                                              stepping.unjammed_iterations,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "dem/solver/bed.h"
+#include "dem/solver/fire_relaxation.h"
 #include "dem/solver/lbfgs_relaxation.h"
 #include "dem/solver/trust_region_newton.h"
 #include "dem/solver/unjammed_equilibrium.h"

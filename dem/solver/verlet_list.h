@@ -97,16 +97,30 @@ namespace compax::dem
                      const double          resolution = 0.0)
     {
       BondChanges changes;
-      for (auto &c : set().pairs)
+      update_histories_of(
+        set().pairs, particles, boundary, resolution, changes);
+      return changes;
+    }
+
+  protected:
+    /// Eq. (13) on each of @p contacts (pairs, or a set's walls), counting
+    /// the bonds formed and broken into @p changes.
+    template <typename Contacts>
+    static void
+    update_histories_of(Contacts             &contacts,
+                        const ParticleSystem &particles,
+                        const Boundary       &boundary,
+                        const double          resolution,
+                        BondChanges          &changes)
+    {
+      for (auto &c : contacts)
         update_history(c.law,
                        contact_overlap(particles, boundary, c),
                        c.history,
                        changes,
                        resolution);
-      return changes;
     }
 
-  protected:
     /// The particle positions at the last build [m].
     const std::vector<Eigen::Vector3d> &
     built_positions() const

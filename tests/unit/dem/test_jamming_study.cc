@@ -65,6 +65,40 @@ TEST(JammingStudy, FitUsesOnlyTheJammedCompactionStates)
   EXPECT_FALSE(fit_jamming(rows, resolution).has_value());
 }
 
+/// The interior fit reads the interior's own columns (solid fraction,
+/// -sigma_zz, Z) and skips rows without an interior (NaN): on a path whose
+/// interior follows Eq. (14) with other parameters than the whole bed, each
+/// region's fit returns its own closed form.
+TEST(JammingStudy, InteriorFitReadsTheInteriorColumns)
+{
+  const double           resolution = 5e3;
+  const double           Z_c = 4.2, Z_0 = 8.0, rho_c = 0.57, theta = 0.6;
+  const double           Zi_c = 5.1, Zi_0 = 6.0, rhoi_c = 0.62, thetai = 0.45;
+  std::vector<DieRecord> rows{compaction_row(0, 0.48, 0.0, 0.0)};
+  rows.back().rho_interior = std::nan("");
+  for (int k = 0; k < 20; ++k)
+    {
+      const double rho        = 0.58 + 0.01 * k;
+      const double rhoi       = rho + 0.05;
+      DieRecord    r          = compaction_row(k + 1,
+                                   rho,
+                                   Z_c + Z_0 * std::pow(rho - rho_c, theta),
+                                   1e6 * (rho - rho_c));
+      r.rho_interior          = rhoi;
+      r.sigma_zz_interior     = -1e6 * (rhoi - rhoi_c);
+      r.coordination_interior = Zi_c + Zi_0 * std::pow(rhoi - rhoi_c, thetai);
+      rows.push_back(r);
+    }
+  const auto bed      = fit_jamming(rows, resolution);
+  const auto interior = fit_jamming(rows, resolution, DieRegion::interior);
+  ASSERT_TRUE(bed.has_value());
+  ASSERT_TRUE(interior.has_value());
+  EXPECT_NEAR(bed->rho_c, rho_c, 1e-4);
+  EXPECT_NEAR(interior->Z_c, Zi_c, 1e-3);
+  EXPECT_NEAR(interior->rho_c, rhoi_c, 1e-4);
+  EXPECT_NEAR(interior->theta, thetai, 1e-3);
+}
+
 /// K_Ic = 0 leaves the materials and switches the bridges off: in the
 /// unloading range of a bonded contact the bridge of the original law pulls
 /// harder; on first loading both laws agree.
