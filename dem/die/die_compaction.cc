@@ -562,6 +562,15 @@ namespace compax::dem
   void
   DieCompaction::unloading_branch(const int branch)
   {
+    // The branch steps with a fresh stepper of its own, as a run resumed
+    // from the branch's checkpoint does: the memory of its unloading and
+    // ejection (secant predictor, sub-step, trust radius) does not carry
+    // into the next compaction step, so the compaction path does not depend
+    // on the branches taken.
+    auto compaction_stepper = std::move(stepper);
+    auto compaction_elastic = std::move(elastic);
+    reset_stepper();
+
     Bed bed = path; // the saved state of the compaction path
     if (on_branch_state)
       on_branch_state(bed, "compaction", branch);
@@ -651,6 +660,8 @@ namespace compax::dem
           on_branch_state(bed, "ejection", branch);
       }
     summaries.push_back(s);
+    stepper = std::move(compaction_stepper);
+    elastic = std::move(compaction_elastic);
   }
 
   void
