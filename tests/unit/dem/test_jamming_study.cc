@@ -87,6 +87,9 @@ TEST(JammingStudy, InteriorFitReadsTheInteriorColumns)
       r.rho_interior          = rhoi;
       r.sigma_zz_interior     = -1e6 * (rhoi - rhoi_c);
       r.coordination_interior = Zi_c + Zi_0 * std::pow(rhoi - rhoi_c, thetai);
+      if (k == 10) // a state whose interior holds no particle
+        r.rho_interior = r.sigma_zz_interior = r.coordination_interior
+          = std::nan("");
       rows.push_back(r);
     }
   const auto bed      = fit_jamming(rows, resolution);
