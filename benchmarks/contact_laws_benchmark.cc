@@ -116,15 +116,15 @@ namespace
   bonded_history()
   {
     ContactHistory h;
-    h.a_p = bonded().plastic_radius(gamma_max);
-    h.a_B = h.a_p;
+    h[BondedElastoplasticLaw::a_p_slot] = bonded().plastic_radius(gamma_max);
+    h[BondedElastoplasticLaw::a_B_slot] = BondedElastoplasticLaw::a_p(h);
     return h;
   }
 
   std::vector<double>
   bonded_unloading_overlaps()
   {
-    const double a_p = bonded_history().a_p;
+    const double a_p = BondedElastoplasticLaw::a_p(bonded_history());
     return overlaps(bonded().breakage_overlap(a_p),
                     bonded().plastic_overlap(a_p));
   }
@@ -163,7 +163,10 @@ namespace
     for (auto _ : state)
       for (const double x : g)
         {
-          const ContactResponse r = law.response(x, h.a_p, h.a_B);
+          const ContactResponse r
+            = law.response(x,
+                           BondedElastoplasticLaw::a_p(h),
+                           BondedElastoplasticLaw::a_B(h));
           benchmark::DoNotOptimize(r.force);
           benchmark::DoNotOptimize(r.stiffness);
         }
@@ -250,7 +253,8 @@ namespace
     const std::vector<double>   g = overlaps(0.0, 5e-6);
     std::vector<ContactHistory> h(n_contacts);
     for (std::size_t i = 0; i < n_contacts; ++i)
-      h[i].delta_max = loading ? 0.5 * g[i] : 1.1 * g[i] + 0.5e-6;
+      h[i][MulticontactAdhesiveLaw::delta_max_slot]
+        = loading ? 0.5 * g[i] : 1.1 * g[i] + 0.5e-6;
     return h;
   }
 
@@ -275,7 +279,9 @@ namespace
       for (std::size_t i = 0; i < n_contacts; ++i)
         {
           const ContactResponse r
-            = law.response(g[i], h[i].delta_max, c[i].particle_pressure);
+            = law.response(g[i],
+                           MulticontactAdhesiveLaw::delta_max(h[i]),
+                           c[i].particle_pressure);
           benchmark::DoNotOptimize(r.force);
           benchmark::DoNotOptimize(r.stiffness);
         }

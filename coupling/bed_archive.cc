@@ -1,6 +1,6 @@
 #include "coupling/bed_archive.h"
 
-#include "dem/solver/history_update.h"
+#include "coupling/history_columns.h"
 
 #include <stdexcept>
 
@@ -8,30 +8,20 @@ namespace compax::coupling
 {
   namespace
   {
-    /// Key (two columns), a_p, a_B, delta_max.
-    constexpr hsize_t history_columns = 5;
+    /// Key (two columns), then the internal variables (history_columns.h).
+    constexpr hsize_t row_columns = 2 + history_columns;
 
-    /// Columns of a saved history table: 5, or 4 in checkpoints written
-    /// before delta_max was kept (it is then 0).
+    /// Columns of a saved history table (row_columns, or the legacy
+    /// layouts history_from_columns() reads).
     std::size_t
     columns_of(const Hdf5ArchiveReader &archive, const std::string &name)
     {
       const std::vector<hsize_t> shape = archive.array_shape(name);
-      const std::size_t          columns
-        = shape.size() == 2 ? shape[1] : history_columns;
-      if (columns != 4 && columns != history_columns)
+      const std::size_t columns = shape.size() == 2 ? shape[1] : row_columns;
+      if (columns < 2)
         throw std::runtime_error("checkpoint array '" + name + "' has "
-                                 + std::to_string(columns)
-                                 + " columns; expected 4 or 5");
+                                 + std::to_string(columns) + " columns");
       return columns;
-    }
-
-    dem::ContactHistory
-    history_at(const std::vector<double> &row,
-               std::size_t                k,
-               std::size_t                columns)
-    {
-      return {row[k + 2], row[k + 3], columns == 5 ? row[k + 4] : 0.0};
     }
   } // namespace
 
@@ -57,31 +47,28 @@ namespace compax::coupling
                          bed.walls.die_present ? 1.0 : 0.0,
                          bed.contacts.skin()});
 
-    // Columns: the contact's key (i, j) or (i, wall), then a_p, a_B and
-    // delta_max, the internal variables of every particle law.
+    // Columns: the contact's key (i, j) or (i, wall), then its internal
+    // variables.
     std::vector<double> pairs, walls;
     for (const auto &c : bed.contacts.pairs)
       if (dem::has_history(c.history))
-        pairs.insert(pairs.end(),
-                     {double(c.i),
-                      double(c.j),
-                      c.history.a_p,
-                      c.history.a_B,
-                      c.history.delta_max});
+        {
+          pairs.insert(pairs.end(), {double(c.i), double(c.j)});
+          append_history(pairs, c.history);
+        }
     for (const auto &c : bed.contacts.walls)
       if (dem::has_history(c.history))
-        walls.insert(walls.end(),
-                     {double(c.i),
-                      double(static_cast<int>(c.wall)),
-                      c.history.a_p,
-                      c.history.a_B,
-                      c.history.delta_max});
+        {
+          walls.insert(walls.end(),
+                       {double(c.i), double(static_cast<int>(c.wall))});
+          append_history(walls, c.history);
+        }
     archive.write_array(group + "/pair_histories",
                         pairs,
-                        {pairs.size() / history_columns, history_columns});
+                        {pairs.size() / row_columns, row_columns});
     archive.write_array(group + "/wall_histories",
                         walls,
-                        {walls.size() / history_columns, history_columns});
+                        {walls.size() / row_columns, row_columns});
   }
 
   dem::Bed
@@ -128,15 +115,14 @@ namespace compax::coupling
     const std::size_t hc = columns_of(archive, group + "/pair_histories");
     for (std::size_t k = 0; k + hc <= h.size(); k += hc)
       {
-        const auto i = index(h[k]);
-        const auto j = index(h[k + 1]);
-        bed.contacts.pairs.push_back({i,
-                                      j,
-                                      model.pair_law(p.materials[i],
-                                                     p.radii[i],
-                                                     p.materials[j],
-                                                     p.radii[j]),
-                                      history_at(h, k, hc)});
+        const auto             i   = index(h[k]);
+        const auto             j   = index(h[k + 1]);
+        const dem::ParticleLaw law = model.pair_law(p.materials[i],
+                                                    p.radii[i],
+                                                    p.materials[j],
+                                                    p.radii[j]);
+        bed.contacts.pairs.push_back(
+          {i, j, law, history_from_columns(&h[k + 2], hc - 2, law)});
       }
     const auto        w  = archive.read_array(group + "/wall_histories");
     const std::size_t wc = columns_of(archive, group + "/wall_histories");
@@ -146,11 +132,12 @@ namespace compax::coupling
         if (!(w[k + 1] >= 0 && w[k + 1] <= 2))
           throw std::runtime_error("checkpoint group '" + group
                                    + "': unknown wall");
+        const dem::ParticleLaw law = model.wall_law(p.materials[i], p.radii[i]);
         bed.contacts.walls.push_back(
           {i,
            static_cast<dem::Wall>(static_cast<int>(w[k + 1])),
-           model.wall_law(p.materials[i], p.radii[i]),
-           history_at(w, k, wc)});
+           law,
+           history_from_columns(&w[k + 2], wc - 2, law)});
       }
     bed.contacts.rebuild(bed.particles, bed.walls, model);
     return bed;

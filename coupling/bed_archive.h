@@ -11,7 +11,7 @@ namespace compax::coupling
   /**
    * Saves a bed state into an HDF5 archive under `group`: particle
    * positions, radii and materials, the die walls, the Verlet skin, and the
-   * internal variables (a_p, a_B, delta_max) of every contact that has any. The
+   * ContactHistory slots of every contact that has any history. The
    * contact laws are not stored: they follow from the materials and the
    * ContactModel when the bed is loaded.
    */

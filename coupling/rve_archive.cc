@@ -1,5 +1,7 @@
 #include "coupling/rve_archive.h"
 
+#include "coupling/history_columns.h"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -31,7 +33,9 @@ namespace compax::coupling
       return A;
     }
 
-    constexpr std::size_t contact_columns = 8;
+    /// i, j, the lattice image (3), then the internal variables.
+    constexpr std::size_t key_columns     = 5;
+    constexpr std::size_t contact_columns = key_columns + history_columns;
   } // namespace
 
   void
@@ -69,15 +73,15 @@ namespace compax::coupling
     std::vector<double> contacts;
     contacts.reserve(contact_columns * bed.contacts.pairs.size());
     for (const dem::PeriodicContact &c : bed.contacts.pairs)
-      contacts.insert(contacts.end(),
-                      {double(c.i),
-                       double(c.j),
-                       double(c.image[0]),
-                       double(c.image[1]),
-                       double(c.image[2]),
-                       c.history.a_p,
-                       c.history.a_B,
-                       c.history.delta_max});
+      {
+        contacts.insert(contacts.end(),
+                        {double(c.i),
+                         double(c.j),
+                         double(c.image[0]),
+                         double(c.image[1]),
+                         double(c.image[2])});
+        append_history(contacts, c.history);
+      }
     archive.write_array(group + "/contacts",
                         contacts,
                         {bed.contacts.pairs.size(), contact_columns});
@@ -126,12 +130,16 @@ namespace compax::coupling
 
     const auto        c = archive.read_array(group + "/contacts");
     const std::size_t n = radii.size();
-    if (c.size() % contact_columns != 0)
+    // Archives written before the laws declared their variables hold
+    // eight columns (history_columns.h).
+    const std::vector<hsize_t> shape = archive.array_shape(group + "/contacts");
+    const std::size_t columns = shape.size() == 2 ? shape[1] : contact_columns;
+    if (columns <= key_columns || c.size() % columns != 0)
       throw std::runtime_error("RVE archive group '" + group
                                + "': malformed contact table");
     const auto &p = bed.particles;
-    bed.contacts.pairs.reserve(c.size() / contact_columns);
-    for (std::size_t k = 0; k < c.size(); k += contact_columns)
+    bed.contacts.pairs.reserve(c.size() / columns);
+    for (std::size_t k = 0; k < c.size(); k += columns)
       {
         if (!(c[k] >= 0 && c[k] < double(n) && c[k + 1] >= 0
               && c[k + 1] < double(n)))
@@ -147,13 +155,18 @@ namespace compax::coupling
         const dem::LatticeImage image{static_cast<std::int32_t>(c[k + 2]),
                                       static_cast<std::int32_t>(c[k + 3]),
                                       static_cast<std::int32_t>(c[k + 4])};
+        const dem::ParticleLaw  law = model.pair_law(p.materials[i],
+                                                    p.radii[i],
+                                                    p.materials[j],
+                                                    p.radii[j]);
         bed.contacts.pairs.push_back(
           {i,
            j,
            image,
-           model.pair_law(
-             p.materials[i], p.radii[i], p.materials[j], p.radii[j]),
-           dem::ContactHistory{c[k + 5], c[k + 6], c[k + 7]}});
+           law,
+           history_from_columns(&c[k + key_columns],
+                                columns - key_columns,
+                                law)});
       }
     bed.contacts.rebuild(bed.particles, bed.cell, model);
     return bed;

@@ -13,7 +13,7 @@ namespace compax::coupling
    * Saves an RVE state under `group` of an archive: particle positions
    * (unwrapped), radii and materials, the lattice H, the reference lattice
    * H_0, the deformation gradient F, the periodicity, the Verlet skin and
-   * every contact of the list as (i, j, image, a_p, a_B, delta_max). The
+   * every contact of the list as (i, j, image, its ContactHistory slots). The
    * contact laws are not stored: they follow from the materials, radii and
    * the ContactModel when the state is loaded.
    */

@@ -60,8 +60,10 @@ namespace compax::cli
                "unload, reload, unload past breakage, any number of "
                "segments), updating the internal variables after every "
                "step as a converged state.\n\nWrites contact.csv "
-               "(step,gamma,force,contact_radius,a_p,a_B,stiffness; SI "
-               "units), contact.png (force and contact radius against "
+               "(step,gamma,force,contact_radius, the law's internal "
+               "variables (a_p,a_B of the bonded law, delta_max of the "
+               "hysteretic ones), stiffness; SI units), contact.png (force and "
+               "contact radius against "
                "gamma, like Gonzalez 2018 Figs. 4 and 7) with its gnuplot "
                "script, and prints the peak compressive force, the pull-off "
                "force with its gamma and contact radius, and the gamma at "
@@ -90,18 +92,20 @@ namespace compax::cli
       run(dealii::ParameterHandler    &prm,
           const std::filesystem::path &folder) const override
       {
-        const ContactPair         pair = make_contact_pair(prm);
-        const std::vector<double> path = get_overlap_path(prm);
-        io::CsvWriter             csv(folder / "contact.csv",
-                          {"step",
-                                       "gamma",
-                                       "force",
-                                       "contact_radius",
-                                       "a_p",
-                                       "a_B",
-                                       "stiffness"});
-        ForceSummary              summary;
-        dem::ContactHistory       history;
+        const ContactPair                       pair = make_contact_pair(prm);
+        const std::vector<double>               path = get_overlap_path(prm);
+        const std::vector<dem::HistoryVariable> variables
+          = pair.law->history_variables();
+        std::vector<std::string> columns{"step",
+                                         "gamma",
+                                         "force",
+                                         "contact_radius"};
+        for (const dem::HistoryVariable &v : variables)
+          columns.emplace_back(v.symbol);
+        columns.emplace_back("stiffness");
+        io::CsvWriter       csv(folder / "contact.csv", columns);
+        ForceSummary        summary;
+        dem::ContactHistory history;
         for (std::size_t step = 0; step < path.size(); ++step)
           {
             const double gamma   = path[step];
@@ -109,14 +113,16 @@ namespace compax::cli
             const auto   r       = pair.law->evaluate(gamma, history, context);
             const auto   next
               = pair.law->updated_history(gamma, history, context);
-            if (history.a_B > 0.0 && next.a_B == 0.0
+            if (pair.law->bonded(history) && !pair.law->bonded(next)
                 && std::isnan(summary.breakage_gamma))
               summary.breakage_gamma = gamma;
             history = next;
 
             csv << static_cast<long long>(step) << gamma << r.force
-                << r.contact_radius << history.a_p << history.a_B
-                << r.stiffness;
+                << r.contact_radius;
+            for (std::size_t v = 0; v < variables.size(); ++v)
+              csv << history[v];
+            csv << r.stiffness;
             csv.end_row();
 
             if (r.force > summary.peak_force)
@@ -135,7 +141,7 @@ namespace compax::cli
         print_summary(pair,
                       summary,
                       *std::max_element(path.begin(), path.end()));
-        plot(folder);
+        plot(folder, variables);
         return success;
       }
 
@@ -165,9 +171,19 @@ namespace compax::cli
           std::cout << "  " << line << '\n';
       }
 
+      /// contact.png: P(gamma), and a(gamma) with the law's internal
+      /// variables that are lengths (columns 5, 6, ... of contact.csv).
       static void
-      plot(const std::filesystem::path &folder)
+      plot(const std::filesystem::path             &folder,
+           const std::vector<dem::HistoryVariable> &variables)
       {
+        std::string radii = "plot 'contact.csv' using 2:4 with lines lw 2 "
+                            "title 'a(gamma)'";
+        for (std::size_t v = 0; v < variables.size(); ++v)
+          if (std::string(variables[v].unit) == "m")
+            radii += ", '' using 2:" + std::to_string(5 + v) + " with lines dt "
+                     + std::to_string(2 + v) + " title '" + variables[v].symbol
+                     + "'";
         render_png(folder,
                    "contact.gp",
                    "set multiplot layout 2,1\n"
@@ -176,10 +192,7 @@ namespace compax::cli
                    "plot 'contact.csv' using 2:3 with lines lw 2 "
                    "title 'P(gamma)'\n"
                    "set ylabel 'contact radius a [m]'\n"
-                   "plot 'contact.csv' using 2:4 with lines lw 2 "
-                   "title 'a(gamma)', '' using 2:5 with lines dt 2 "
-                   "title 'a_p', '' using 2:6 with lines dt 3 title 'a_B'\n"
-                   "unset multiplot\n",
+                     + radii + "\nunset multiplot\n",
                    "contact.png");
       }
     };

@@ -16,13 +16,13 @@ namespace compax::cli
         const Eigen::Vector3d d     = dem::branch_vector(p, bed.cell, c);
         const double          gamma = p.radii[c.i] + p.radii[c.j] - d.norm();
         const double          P
-          = c.history.a_p == 0.0 && gamma <= 0.0
+          = dem::plastic_radius(c.law, c.history) == 0.0 && gamma <= 0.0
               ? 0.0
               : dem::periodic_contact_response(c,
                                                gamma,
                                                dem::ContactBranch::current)
                   .force;
-        snapshot.add_contact(c.i, c.j, d.normalized(), P, c.history);
+        snapshot.add_contact(c.i, c.j, d.normalized(), P, c.law, c.history);
       }
     for (Eigen::Vector3d &x : snapshot.positions())
       bed.cell.wrap(x);

@@ -11,10 +11,11 @@ namespace compax::cli
    * Writes the particles of a periodic cell as a VTK XML unstructured grid
    * of vertices (.vtu) with the point data of the die's snapshots (radius,
    * material, coordination, net_force, mean_contact_force,
-   * max_plastic_radius, bonds), the positions wrapped into the cell (the
-   * cell keeps them unwrapped). dem/io/particle_vtu.h writes a die Bed,
-   * whose contacts join unwrapped positions without images, hence this
-   * writer; the collection file is dem::write_pvd's.
+   * max_<variable> of each declared internal variable, bonds), the positions
+   * wrapped into the cell (the cell keeps them unwrapped).
+   * dem/io/particle_vtu.h writes a die Bed, whose contacts join unwrapped
+   * positions without images, hence this writer; the collection file is
+   * dem::write_pvd's.
    */
   void
   write_rve_vtu(const std::filesystem::path &file, const dem::PeriodicBed &bed);

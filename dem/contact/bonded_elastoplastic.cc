@@ -159,7 +159,16 @@ namespace compax::dem
                                    const ContactHistory &history,
                                    const ContactContext &) const
   {
-    return response(gamma, history.a_p, history.a_B);
+    return response(gamma, a_p(history), a_B(history));
+  }
+
+  ContactHistory
+  BondedElastoplasticLaw::history(const double a_p, const double a_B)
+  {
+    ContactHistory h;
+    h[a_p_slot] = a_p;
+    h[a_B_slot] = a_B;
+    return h;
   }
 
   ContactHistory
@@ -168,14 +177,14 @@ namespace compax::dem
                                           const ContactContext &) const
   {
     ContactHistory next = history;
-    const double   a    = contact_radius(gamma, history.a_p);
-    if (a > history.a_p)
+    const double   a    = contact_radius(gamma, a_p(history));
+    if (a > a_p(history))
       {
-        next.a_p = a;
-        next.a_B = k.fracture_toughness > 0.0 ? a : 0.0;
+        next[a_p_slot] = a;
+        next[a_B_slot] = k.fracture_toughness > 0.0 ? a : 0.0;
       }
     else if (a == 0.0)
-      next.a_B = 0.0;
+      next[a_B_slot] = 0.0;
     return next;
   }
 
@@ -184,8 +193,8 @@ namespace compax::dem
                                               const ContactHistory &history,
                                               const ContactContext &) const
   {
-    const ContactResponse r = response(gamma, history.a_p, history.a_B);
-    if (r.contact_radius > 0.0 && r.contact_radius >= history.a_p)
+    const ContactResponse r = response(gamma, a_p(history), a_B(history));
+    if (r.contact_radius > 0.0 && r.contact_radius >= a_p(history))
       return 16.0 * k.effective_modulus * r.contact_radius / (3.0 * pi);
     return r.stiffness;
   }
@@ -195,7 +204,7 @@ namespace compax::dem
                                             const ContactHistory &history,
                                             const ContactContext &) const
   {
-    return response(gamma, history.a_p, history.a_B).contact_radius
-           > history.a_p;
+    return response(gamma, a_p(history), a_B(history)).contact_radius
+           > a_p(history);
   }
 } // namespace compax::dem

@@ -77,6 +77,42 @@ namespace compax::dem
              double                       regularization,
              bool                         regularized = true);
 
+    /// Slots of the internal variables in ContactHistory.
+    static constexpr std::size_t a_p_slot = 0;
+    static constexpr std::size_t a_B_slot = 1;
+
+    /// Plastic contact radius a_p [m] of a contact's history.
+    static double
+    a_p(const ContactHistory &history)
+    {
+      return history[a_p_slot];
+    }
+
+    /// Radius of the bonded area a_B [m] of a contact's history.
+    static double
+    a_B(const ContactHistory &history)
+    {
+      return history[a_B_slot];
+    }
+
+    /// The history of plastic radius a_p and bonded radius a_B [m].
+    static ContactHistory
+    history(double a_p, double a_B);
+
+    /// a_p and a_B, both [m].
+    std::vector<HistoryVariable>
+    history_variables() const override
+    {
+      return {{"a_p", "plastic_radius", "m"}, {"a_B", "bond_radius", "m"}};
+    }
+
+    /// a_B > 0: the contact holds a solid bridge.
+    bool
+    bonded(const ContactHistory &history) const override
+    {
+      return a_B(history) > 0.0;
+    }
+
     using ContactLaw::evaluate;
     using ContactLaw::updated_history;
 

@@ -3,6 +3,7 @@
 #include "dem/contact/contact_response.h"
 
 #include <string>
+#include <vector>
 
 namespace compax::dem
 {
@@ -65,6 +66,23 @@ namespace compax::dem
       (void)gamma;
       (void)history;
       (void)context;
+      return false;
+    }
+
+    /// The internal variables the law keeps, slot k of ContactHistory
+    /// being the k-th; none for an elastic law (the default).
+    virtual std::vector<HistoryVariable>
+    history_variables() const
+    {
+      return {};
+    }
+
+    /// Whether the contact holds a solid bridge (counted as a bond in the
+    /// bed's statistics); false for laws without bonds (the default).
+    virtual bool
+    bonded(const ContactHistory &history) const
+    {
+      (void)history;
       return false;
     }
 

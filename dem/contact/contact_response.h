@@ -1,5 +1,7 @@
 #pragma once
 
+#include "dem/contact/contact_history.h"
+
 /**
  * @file
  * The value types every contact law returns and keeps.
@@ -24,30 +26,6 @@ namespace compax::dem
     double stiffness = 0.0;
     /// Contact radius a [m].
     double contact_radius = 0.0;
-  };
-
-  /**
-   * Internal variables of one contact. Each law reads the ones it needs and
-   * leaves the others untouched. They change only through a law's
-   * updated_history(), called on converged states, never during trial
-   * evaluations.
-   */
-  struct ContactHistory
-  {
-    /// Plastic contact radius a_p [m] (Gonzalez 2018, Eq. 3).
-    double a_p = 0.0;
-    /// Radius of the bonded area (solid bridge) a_B [m] (Gonzalez 2018,
-    /// Eq. 5).
-    double a_B = 0.0;
-    /// Largest overlap reached so far, delta_max [m] (Giannis 2021, Eq. 11).
-    double delta_max = 0.0;
-
-    bool
-    operator==(const ContactHistory &other) const
-    {
-      return a_p == other.a_p && a_B == other.a_B
-             && delta_max == other.delta_max;
-    }
   };
 
   /**

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <vector>
 
 /**
  * @file
@@ -70,14 +71,46 @@ namespace compax::dem
     }
   };
 
-  /// The history after a converged state at overlap gamma [m]: the largest
-  /// overlap delta_max, the only internal variable of the hysteretic
-  /// spring, raised to gamma; a_p and a_B are left untouched.
-  inline ContactHistory
-  with_largest_overlap(const ContactHistory &history, const double gamma)
+  /**
+   * The one internal variable of a hysteretic spring, the largest overlap
+   * delta_max [m], in slot 0 of ContactHistory; the laws built on the
+   * spring derive from this to read and write it by name.
+   */
+  struct LargestOverlapHistory
   {
-    ContactHistory next = history;
-    next.delta_max      = std::max(history.delta_max, gamma);
-    return next;
-  }
+    static constexpr std::size_t delta_max_slot = 0;
+
+    /// delta_max [m] of a contact's history.
+    static double
+    delta_max(const ContactHistory &history)
+    {
+      return history[delta_max_slot];
+    }
+
+    /// The history of largest overlap delta_max [m].
+    static ContactHistory
+    history(const double delta_max)
+    {
+      ContactHistory h;
+      h[delta_max_slot] = delta_max;
+      return h;
+    }
+
+    /// The history after a converged state at overlap gamma [m]: delta_max
+    /// raised to gamma.
+    static ContactHistory
+    with_largest_overlap(const ContactHistory &history, const double gamma)
+    {
+      ContactHistory next  = history;
+      next[delta_max_slot] = std::max(delta_max(history), gamma);
+      return next;
+    }
+
+    /// The declaration of delta_max for ContactLaw::history_variables().
+    static std::vector<HistoryVariable>
+    variables()
+    {
+      return {{"delta_max", "largest_overlap", "m"}};
+    }
+  };
 } // namespace compax::dem

@@ -208,7 +208,7 @@ namespace compax::dem
                                     const ContactHistory &history,
                                     const ContactContext &context) const
   {
-    return response(gamma, history.delta_max, context.particle_pressure);
+    return response(gamma, delta_max(history), context.particle_pressure);
   }
 
   ContactHistory

@@ -12,7 +12,7 @@ namespace compax::dem
    * term proportional to the pressure of the two particles.
    *
    * With x = delta^{3/2}, x_max = delta_max^{3/2} and the history variable
-   * delta_max (ContactHistory::delta_max):
+   * delta_max (slot 0 of ContactHistory, LargestOverlapHistory):
    * - loading, delta >= delta_max:           F = F_0 + k1 x
    * - un/reloading, delta_min < delta < delta_max:
    *                                          F = F_0 + k2* (x - x_0)
@@ -67,7 +67,8 @@ namespace compax::dem
    * branch (no separate reloading path). A nonzero F_0 makes the force jump
    * by F_0 at delta = 0 (contact made or lost).
    */
-  class MulticontactAdhesiveLaw final : public ContactLaw
+  class MulticontactAdhesiveLaw final : public ContactLaw,
+                                        public LargestOverlapHistory
   {
   public:
     /// Dimensionless parameters of the law (Giannis 2021, Table 3) and F_0.
@@ -114,6 +115,13 @@ namespace compax::dem
     static RegisteredContactLaw
     registration();
 
+    /// delta_max [m].
+    std::vector<HistoryVariable>
+    history_variables() const override
+    {
+      return variables();
+    }
+
     using ContactLaw::evaluate;
     using ContactLaw::updated_history;
 
@@ -122,7 +130,7 @@ namespace compax::dem
              const ContactHistory &history,
              const ContactContext &context) const override;
 
-    /// delta_max <- max(delta_max, gamma); a_p and a_B are left untouched.
+    /// delta_max <- max(delta_max, gamma); the other slot is left untouched.
     ContactHistory
     updated_history(double                gamma,
                     const ContactHistory &history,

@@ -6,6 +6,7 @@
 #include <optional>
 #include <type_traits>
 #include <variant>
+#include <vector>
 
 /**
  * @file
@@ -87,6 +88,33 @@ namespace compax::dem
     return std::visit(
       [&](const auto &l) { return l.loads_plastically(gamma, history, {}); },
       law);
+  }
+
+  /// ContactLaw::bonded(): whether the contact holds a solid bridge.
+  inline bool
+  bonded(const ParticleLaw &law, const ContactHistory &history)
+  {
+    return std::visit([&](const auto &l) { return l.bonded(history); }, law);
+  }
+
+  /// ContactLaw::history_variables(): the law's declared internal variables.
+  inline std::vector<HistoryVariable>
+  history_variables(const ParticleLaw &law)
+  {
+    return std::visit([](const auto &l) { return l.history_variables(); }, law);
+  }
+
+  /**
+   * The plastic contact radius a_p [m] of a bonded contact, 0 for other
+   * laws: the radius of the area a contact keeps after plastic loading,
+   * which the bed statistics average and the unjammed-step limits read.
+   */
+  inline double
+  plastic_radius(const ParticleLaw &law, const ContactHistory &history)
+  {
+    return std::holds_alternative<BondedElastoplasticLaw>(law)
+             ? BondedElastoplasticLaw::a_p(history)
+             : 0.0;
   }
 
   /// The bonded law of a contact that holds it (std::bad_variant_access

@@ -148,7 +148,7 @@ namespace compax::dem
                            const ContactHistory &history,
                            const ContactContext &) const
   {
-    return response(gamma, history.delta_max);
+    return response(gamma, delta_max(history));
   }
 
   ContactHistory
@@ -167,9 +167,9 @@ namespace compax::dem
     // Loading beyond delta_max: the un/reloading branch that starts here.
     // Already below it: the branch the contact is on (un/reloading,
     // adhesive, or none).
-    if (gamma > 0.0 && gamma >= history.delta_max)
+    if (gamma > 0.0 && gamma >= delta_max(history))
       return unloading_stiffness(gamma);
-    return response(gamma, history.delta_max).stiffness;
+    return response(gamma, delta_max(history)).stiffness;
   }
 
   bool
@@ -177,6 +177,6 @@ namespace compax::dem
                                     const ContactHistory &history,
                                     const ContactContext &) const
   {
-    return gamma > std::max(history.delta_max, 0.0);
+    return gamma > std::max(delta_max(history), 0.0);
   }
 } // namespace compax::dem

@@ -13,7 +13,8 @@ namespace compax::dem
    * loading branch of stiffness k1, an elastic un/reloading branch whose
    * stiffness k2 rises with the largest overlap, and an optional adhesive
    * branch of stiffness kc. With the history variable delta_max
-   * (ContactHistory::delta_max), the largest overlap of a converged state:
+   * (slot 0 of ContactHistory, LargestOverlapHistory), the largest overlap of a
+   * converged state:
    * - loading, delta >= delta_max:               F = k1 delta
    * - un/reloading, delta_min < delta < delta_max: F = k2 (delta - delta_0)
    * - adhesive, 0 < delta <= delta_min:           F = -kc delta
@@ -33,7 +34,7 @@ namespace compax::dem
    * spring has no contact radius; contact_radius reports the geometric
    * sqrt(R delta).
    */
-  class WaltonBraunLaw final : public ContactLaw
+  class WaltonBraunLaw final : public ContactLaw, public LargestOverlapHistory
   {
   public:
     struct Parameters
@@ -64,6 +65,13 @@ namespace compax::dem
     static RegisteredContactLaw
     registration();
 
+    /// delta_max [m].
+    std::vector<HistoryVariable>
+    history_variables() const override
+    {
+      return variables();
+    }
+
     using ContactLaw::evaluate;
     using ContactLaw::updated_history;
 
@@ -72,7 +80,7 @@ namespace compax::dem
              const ContactHistory &history,
              const ContactContext &context) const override;
 
-    /// delta_max <- max(delta_max, gamma); a_p and a_B are left untouched.
+    /// delta_max <- max(delta_max, gamma); the other slot is left untouched.
     ContactHistory
     updated_history(double                gamma,
                     const ContactHistory &history,

@@ -21,8 +21,9 @@ namespace compax::dem
           ++loaded;
         m.n_tensile += P < 0.0;
         m.n_compressive += P > 0.0;
-        m.n_bonds += c.history.a_B > 0.0;
-        ap2 += c.history.a_p * c.history.a_p;
+        m.n_bonds += bonded(c.law, c.history);
+        const double a_p = plastic_radius(c.law, c.history);
+        ap2 += a_p * a_p;
       }
     for (const double R : p.radii)
       r2 += R * R;

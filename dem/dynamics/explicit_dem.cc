@@ -63,8 +63,10 @@ namespace compax::dem
     {
       const MulticontactAdhesiveLaw contact_law(c.R, c.E, law);
       const ContactResponse         r
-        = contact_law.response(c.delta, history.delta_max, c.P);
-      history.delta_max = std::max(history.delta_max, c.delta);
+        = contact_law.response(c.delta,
+                               MulticontactAdhesiveLaw::delta_max(history),
+                               c.P);
+      history = MulticontactAdhesiveLaw::with_largest_overlap(history, c.delta);
       return {r.force,
               2.0 * c.E * std::sqrt(c.R * c.delta),
               std::abs(r.stiffness)};
@@ -598,7 +600,7 @@ namespace compax::dem
           const double R
             = p.radius[c.i] * p.radius[c.j] / (p.radius[c.i] + p.radius[c.j]);
           const MulticontactAdhesiveLaw law(R, E_pp, mat.normal_law);
-          e += normal_energy(law, c.overlap, c.history.delta_max);
+          e += normal_energy(law, c.overlap, law.delta_max(c.history));
           const double S_t = 8.0 * G_pp * std::sqrt(R * c.overlap);
           e += 0.5 * S_t * c.tangential.squaredNorm();
         }
@@ -612,7 +614,7 @@ namespace compax::dem
             const MulticontactAdhesiveLaw law(p.radius[i],
                                               E_pw,
                                               mat.normal_law);
-            e += normal_energy(law, c.overlap, c.history.delta_max);
+            e += normal_energy(law, c.overlap, law.delta_max(c.history));
             const double S_t = 8.0 * G_pw * std::sqrt(p.radius[i] * c.overlap);
             e += 0.5 * S_t * c.tangential.squaredNorm();
           }

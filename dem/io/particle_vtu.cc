@@ -29,7 +29,6 @@ namespace compax::dem
       , material(p.materials.begin(), p.materials.end())
       , coordination(p.size(), 0)
       , bonds(p.size(), 0)
-      , plastic_radius(p.size(), 0.0)
       , force_sum(p.size(), 0.0)
       , net(p.size(), Eigen::Vector3d::Zero())
   {
@@ -40,13 +39,25 @@ namespace compax::dem
                                 const std::uint32_t    j,
                                 const Eigen::Vector3d &n,
                                 const double           P,
+                                const ParticleLaw     &law,
                                 const ContactHistory  &h)
   {
-    for (const auto k : {i, j})
+    const std::vector<HistoryVariable> variables = history_variables(law);
+    for (std::size_t v = 0; v < variables.size(); ++v)
       {
-        plastic_radius[k] = std::max(plastic_radius[k], h.a_p);
-        bonds[k] += h.a_B > 0.0;
+        const std::string name = std::string("max_") + variables[v].name;
+        auto              it   = std::find_if(largest_history.begin(),
+                               largest_history.end(),
+                               [&](const auto &a) { return a.first == name; });
+        if (it == largest_history.end())
+          it = largest_history.insert(
+            it, {name, std::vector<double>(points.size(), 0.0)});
+        for (const auto k : {i, j})
+          it->second[k] = std::max(it->second[k], h[v]);
       }
+    const bool bridge = bonded(law, h);
+    for (const auto k : {i, j})
+      bonds[k] += bridge;
     if (P == 0.0)
       return;
     net[i] += P * n;
@@ -97,7 +108,8 @@ namespace compax::dem
     write_array(out, "coordination", "Int32", coordination);
     write_array(out, "net_force", "Float64", net_force);
     write_array(out, "mean_contact_force", "Float64", mean_force);
-    write_array(out, "max_plastic_radius", "Float64", plastic_radius);
+    for (const auto &[name, largest] : largest_history)
+      write_array(out, name.c_str(), "Float64", largest);
     write_array(out, "bonds", "Int32", bonds);
     out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n"
         << "</VTKFile>\n";
@@ -114,6 +126,7 @@ namespace compax::dem
         c.j,
         (p.positions[c.i] - p.positions[c.j]).normalized(),
         law_response(c.law, pair_overlap(p, c), c.history).force,
+        c.law,
         c.history);
     snapshot.write(file);
   }

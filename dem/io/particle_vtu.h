@@ -11,9 +11,10 @@ namespace compax::dem
 {
   /**
    * The point data of a particle snapshot gathered contact by contact
-   * (coordination, net force, mean contact force, largest a_p, intact
-   * bonds), written as a VTK XML unstructured grid of vertices. Any
-   * contact set feeds it (die beds, periodic cells), each with its own
+   * (coordination, net force, mean contact force, intact bonds, and the
+   * largest value among its contacts of every internal variable the
+   * contact laws declare), written as a VTK XML unstructured grid of vertices.
+   * Any contact set feeds it (die beds, periodic cells), each with its own
    * branch vectors.
    */
   class ParticleSnapshot
@@ -22,12 +23,13 @@ namespace compax::dem
     explicit ParticleSnapshot(const ParticleSystem &particles);
 
     /// A contact between i and j with unit normal n (from j to i), normal
-    /// force P (positive repulsive) and internal variables.
+    /// force P (positive repulsive), law and internal variables.
     void
     add_contact(std::uint32_t          i,
                 std::uint32_t          j,
                 const Eigen::Vector3d &n,
                 double                 force,
+                const ParticleLaw     &law,
                 const ContactHistory  &history);
 
     /// Positions written (e.g. wrapped into a periodic cell first).
@@ -44,17 +46,22 @@ namespace compax::dem
     std::vector<Eigen::Vector3d> points;
     std::vector<double>          radii;
     std::vector<int>             material, coordination, bonds;
-    std::vector<double>          plastic_radius, force_sum;
+    std::vector<double>          force_sum;
     std::vector<Eigen::Vector3d> net;
+    /// "max_<name>" and its per-particle values, for each declared
+    /// internal variable met so far.
+    std::vector<std::pair<std::string, std::vector<double>>> largest_history;
   };
 
   /**
    * Writes the particles of a bed as a VTK XML unstructured grid of vertices
    * (.vtu), for ParaView: glyph them with spheres scaled by "radius". Point
    * data: radius [m], material, coordination (number of loaded particle
-   * contacts), net contact force magnitude on the particle [N], largest
-   * plastic contact radius a_p among its contacts [m], number of intact
-   * solid bridges (a_B > 0), and the mean normal force of its contacts [N].
+   * contacts), net contact force magnitude on the particle [N], number of
+   * intact solid bridges, the mean normal force of its contacts [N], and
+   * max_<name>, the largest value among its contacts of each internal
+   * variable its contacts' laws declare (max_plastic_radius [m] and
+   * max_bond_radius [m] for the bonded law).
    */
   void
   write_particles_vtu(const std::filesystem::path &file, const Bed &bed);

@@ -57,7 +57,7 @@ namespace compax::dem
         const Eigen::Vector3d d     = branch_vector(p, bed.cell, c);
         const double          dist  = d.norm();
         const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
-        if (c.history.a_p == 0.0 && gamma <= 0.0)
+        if (plastic_radius(c.law, c.history) == 0.0 && gamma <= 0.0)
           continue;
         const double force
           = periodic_contact_response(c, gamma, ContactBranch::current).force;
@@ -88,7 +88,7 @@ namespace compax::dem
         const Eigen::Vector3d d     = branch_vector(p, bed.cell, c);
         const double          dist  = d.norm();
         const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
-        if (c.history.a_p == 0.0 && gamma <= 0.0)
+        if (plastic_radius(c.law, c.history) == 0.0 && gamma <= 0.0)
           continue;
         const ContactResponse r = periodic_contact_response(c, gamma, branch);
         if (r.force == 0.0 && r.stiffness == 0.0)

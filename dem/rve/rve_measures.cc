@@ -17,11 +17,12 @@ namespace compax::dem
     double                                               ap2 = 0.0, r2 = 0.0;
     for (const PeriodicContact &c : bed.contacts.pairs)
       {
-        ap2 += c.history.a_p * c.history.a_p;
-        m.n_bonds += c.history.a_B > 0.0;
+        const double a_p = plastic_radius(c.law, c.history);
+        ap2 += a_p * a_p;
+        m.n_bonds += bonded(c.law, c.history);
         const double gamma
           = p.radii[c.i] + p.radii[c.j] - branch_vector(p, bed.cell, c).norm();
-        if (c.history.a_p == 0.0 && gamma <= 0.0)
+        if (a_p == 0.0 && gamma <= 0.0)
           continue;
         if (periodic_contact_response(c, gamma, ContactBranch::current).force
             == 0.0)

@@ -82,7 +82,7 @@ namespace compax::dem
       for (const auto &c : bed.contacts.pairs)
         {
           // Only contacts the quadratic model does not see: virgin and apart.
-          if (c.history.a_p > 0.0)
+          if (plastic_radius(c.law, c.history) > 0.0)
             continue;
           const Eigen::Vector3d d     = branch_vector(bed, c);
           const double          dist  = d.norm();

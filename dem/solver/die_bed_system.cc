@@ -12,7 +12,7 @@ namespace compax::dem
     bool                  clipped = false;
     for (const WallContact &c : bed.contacts.walls)
       {
-        if (c.history.a_p > 0.0)
+        if (plastic_radius(c.law, c.history) > 0.0)
           continue;
         const WallGap g = bed.walls.gap(c.wall, p.positions[c.i], p.radii[c.i]);
         if (g.overlap > 0.0)

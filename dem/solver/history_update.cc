@@ -14,10 +14,12 @@ namespace compax::dem
     if (resolution > 0.0 && loads_plastically(law, gamma, history)
         && std::abs(law_response(law, gamma, history).force) <= resolution)
       return;
-    const ContactHistory next = updated_history(law, gamma, history);
-    if (history.a_B == 0.0 && next.a_B > 0.0)
+    const ContactHistory next       = updated_history(law, gamma, history);
+    const bool           was_bonded = bonded(law, history);
+    const bool           is_bonded  = bonded(law, next);
+    if (!was_bonded && is_bonded)
       ++changes.formed;
-    else if (history.a_B > 0.0 && next.a_B == 0.0)
+    else if (was_bonded && !is_bonded)
       ++changes.broken;
     history = next;
   }

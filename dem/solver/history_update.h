@@ -13,14 +13,6 @@ namespace compax::dem
     std::size_t broken = 0;
   };
 
-  /// Whether a contact keeps internal variables (plastic radius, bond or
-  /// largest overlap).
-  inline bool
-  has_history(const ContactHistory &h)
-  {
-    return h.a_p > 0.0 || h.a_B > 0.0 || h.delta_max > 0.0;
-  }
-
   /**
    * Applies the law's history update (Eq. 13 for the bonded law) to one
    * contact at overlap gamma and counts the bond it forms or breaks. A

@@ -42,7 +42,9 @@ namespace compax::dem
                    const ContactHistory &history)
   {
     if (const auto *bonded = std::get_if<BondedElastoplasticLaw>(&law))
-      return bonded->response(gamma, history.a_p, history.a_B);
+      return bonded->response(gamma,
+                              BondedElastoplasticLaw::a_p(history),
+                              BondedElastoplasticLaw::a_B(history));
     return law_response(law, gamma, history);
   }
 
@@ -61,7 +63,8 @@ namespace compax::dem
       return r;
     if (const auto *bonded = std::get_if<BondedElastoplasticLaw>(&c.law))
       {
-        if (r.contact_radius > 0.0 && r.contact_radius >= c.history.a_p)
+        if (r.contact_radius > 0.0
+            && r.contact_radius >= BondedElastoplasticLaw::a_p(c.history))
           r.stiffness = unloading_stiffness(*bonded, r.contact_radius);
       }
     else

@@ -212,6 +212,8 @@ TEST_F(ContactCommand, WaltonBraunFollowsItsLoadingUnloadingAndAdhesiveBranches)
       EXPECT_NEAR(csv.column.at("force")[i], P, 1e-5 * std::abs(P) + 1e-12)
         << "row " << i << ", gamma " << d;
       d_max = std::max(d_max, d);
+      // The law's one internal variable, after the converged state.
+      EXPECT_DOUBLE_EQ(csv.column.at("delta_max")[i], d_max) << "row " << i;
     }
   EXPECT_GT(unloading, 0);
   EXPECT_GT(adhesive, 0);

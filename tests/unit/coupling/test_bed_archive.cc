@@ -78,11 +78,11 @@ TEST(BedCheckpoint, RestartEqualsUninterruptedRun)
   double      sum_a_p = 0, restored_sum_a_p = 0;
   for (const auto &c : original.contacts.pairs)
     {
-      with_history += c.history.a_p > 0;
-      sum_a_p += c.history.a_p;
+      with_history += dem::BondedElastoplasticLaw::a_p(c.history) > 0;
+      sum_a_p += dem::BondedElastoplasticLaw::a_p(c.history);
     }
   for (const auto &c : restored.contacts.pairs)
-    restored_sum_a_p += c.history.a_p;
+    restored_sum_a_p += dem::BondedElastoplasticLaw::a_p(c.history);
   ASSERT_GT(with_history, 10u);
   EXPECT_EQ(restored_sum_a_p, sum_a_p);
 

@@ -111,6 +111,7 @@ TEST(RveMaterialLattice, Fe2TabletOfSimpleCubicLatticeFollowsThePairLaw)
     }
   // The last steps unloaded: the axial contacts are on the elastic branch,
   // inside their plastic radius.
-  EXPECT_LT(law.contact_radius(2 * R - a * (1.0 - 5.8e-3), axial.a_p),
-            0.999 * axial.a_p);
+  EXPECT_LT(law.contact_radius(2 * R - a * (1.0 - 5.8e-3),
+                               dem::BondedElastoplasticLaw::a_p(axial)),
+            0.999 * dem::BondedElastoplasticLaw::a_p(axial));
 }

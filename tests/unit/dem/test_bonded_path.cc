@@ -30,9 +30,15 @@ namespace
   double
   pull_off(const BondedElastoplasticLaw &law, const ContactHistory &h)
   {
-    const double lo0 = law.breakage_overlap(h.a_p);
-    const double hi0 = law.plastic_overlap(h.a_p);
-    auto      P = [&](double g) { return law.response(g, h.a_p, h.a_B).force; };
+    const double lo0 = law.breakage_overlap(BondedElastoplasticLaw::a_p(h));
+    const double hi0 = law.plastic_overlap(BondedElastoplasticLaw::a_p(h));
+    auto         P   = [&](double g) {
+      return law
+        .response(g,
+                  BondedElastoplasticLaw::a_p(h),
+                  BondedElastoplasticLaw::a_B(h))
+        .force;
+    };
     int       best = 0;
     const int n    = 4000;
     for (int k = 1; k <= n; ++k)
@@ -84,9 +90,9 @@ TEST(BondedPath, ChainStaysTogetherAndPullsOffAtTheLawsForce)
       ASSERT_TRUE(stepper.advance(bed, w).converged);
     }
   for (const auto &c : bed.contacts.pairs)
-    EXPECT_GT(c.history.a_B, 0.0);
+    EXPECT_GT(BondedElastoplasticLaw::a_B(c.history), 0.0);
   for (const auto &c : bed.contacts.walls)
-    EXPECT_GT(c.history.a_B, 0.0);
+    EXPECT_GT(BondedElastoplasticLaw::a_B(c.history), 0.0);
   ASSERT_EQ(bed.contacts.pairs.size(), 2u);
   ASSERT_EQ(bed.contacts.walls.size(), 2u);
 
@@ -120,9 +126,11 @@ TEST(BondedPath, ChainStaysTogetherAndPullsOffAtTheLawsForce)
                                    - (bed.particles.positions[c.j]
                                       - bed.particles.positions[c.i])
                                        .norm();
-              EXPECT_GT(c.history.a_B, 0.0);
+              EXPECT_GT(BondedElastoplasticLaw::a_B(c.history), 0.0);
               EXPECT_GT(bonded_law(c.law)
-                          .response(gamma, c.history.a_p, c.history.a_B)
+                          .response(gamma,
+                                    BondedElastoplasticLaw::a_p(c.history),
+                                    BondedElastoplasticLaw::a_B(c.history))
                           .contact_radius,
                         0.0);
             }
@@ -130,9 +138,9 @@ TEST(BondedPath, ChainStaysTogetherAndPullsOffAtTheLawsForce)
       most_tensile = std::min(most_tensile, F);
       bool broken  = false;
       for (const auto &c : bed.contacts.pairs)
-        broken = broken || c.history.a_B == 0.0;
+        broken = broken || BondedElastoplasticLaw::a_B(c.history) == 0.0;
       for (const auto &c : bed.contacts.walls)
-        broken = broken || c.history.a_B == 0.0;
+        broken = broken || BondedElastoplasticLaw::a_B(c.history) == 0.0;
       if (broken)
         break;
     }
@@ -176,7 +184,7 @@ TEST(BondedPath, HypostaticTriangleStandsOnlyByItsBridge)
     if (c.i + c.j == 1)
       base = &c;
   ASSERT_NE(base, nullptr);
-  ASSERT_GT(base->history.a_B, 0.0);
+  ASSERT_GT(BondedElastoplasticLaw::a_B(base->history), 0.0);
   const double load = sums_of(bonded, model).wall_force[int(Wall::upper_punch)];
   ASSERT_GT(load, 0.0);
 
@@ -225,8 +233,8 @@ TEST(BondedPath, HypostaticTriangleStandsOnlyByItsBridge)
                               - (bonded.particles.positions[1]
                                  - bonded.particles.positions[0])
                                   .norm(),
-                            c.history.a_p,
-                            c.history.a_B)
+                            BondedElastoplasticLaw::a_p(c.history),
+                            BondedElastoplasticLaw::a_B(c.history))
                   .force,
                 0.0);
     }
@@ -255,9 +263,13 @@ TEST(BondedPath, FailedStepLeavesHistoriesUntouched)
   auto histories = [](const Bed &b) {
     std::vector<double> h;
     for (const auto &c : b.contacts.pairs)
-      h.insert(h.end(), {c.history.a_p, c.history.a_B});
+      h.insert(h.end(),
+               {BondedElastoplasticLaw::a_p(c.history),
+                BondedElastoplasticLaw::a_B(c.history)});
     for (const auto &c : b.contacts.walls)
-      h.insert(h.end(), {c.history.a_p, c.history.a_B});
+      h.insert(h.end(),
+               {BondedElastoplasticLaw::a_p(c.history),
+                BondedElastoplasticLaw::a_B(c.history)});
     return h;
   };
   const std::vector<double> before = histories(bed);

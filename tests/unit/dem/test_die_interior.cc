@@ -130,7 +130,9 @@ TEST(DieInterior, WholeDieStressIsThePunchPressure)
                                         state.particles.radii[c.i]);
       offset += 0.5 * g.overlap
                 * bonded_law(c.law)
-                    .response(g.overlap, c.history.a_p, c.history.a_B)
+                    .response(g.overlap,
+                              BondedElastoplasticLaw::a_p(c.history),
+                              BondedElastoplasticLaw::a_B(c.history))
                     .force;
     }
   const double V = state.walls.enclosed_volume();

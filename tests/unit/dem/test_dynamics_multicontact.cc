@@ -157,7 +157,9 @@ TEST(MulticontactDynamics, LoadUnloadAdhesionReloadFollowEqs6To11)
         EXPECT_EQ(law.k2s(peak), law.k2);
       // The contact let go: no force, history gone.
       EXPECT_EQ(path.back().force, 0.0);
-      EXPECT_EQ(dem.pair_contacts()[0].history.delta_max, 0.0);
+      EXPECT_EQ(MulticontactAdhesiveLaw::delta_max(
+                  dem.pair_contacts()[0].history),
+                0.0);
     }
 }
 

@@ -118,7 +118,7 @@ namespace
   history_with_max(double delta_max)
   {
     ContactHistory h;
-    h.delta_max = delta_max;
+    h[MulticontactAdhesiveLaw::delta_max_slot] = delta_max;
     return h;
   }
 
@@ -353,8 +353,10 @@ namespace
               // Off the grid points, away from the kinks.
               const double d    = base * (1 + 3.7e-4);
               const double step = 1e-6 * d;
-              const double dmin = law.minimum_overlap(h.delta_max);
-              if (std::abs(d - h.delta_max) < 100 * step
+              const double dmin
+                = law.minimum_overlap(MulticontactAdhesiveLaw::delta_max(h));
+              if (std::abs(d - MulticontactAdhesiveLaw::delta_max(h))
+                    < 100 * step
                   || std::abs(d - dmin) < 100 * step)
                 continue;
               const ContactResponse r = law.evaluate(d, h, context);
@@ -362,7 +364,8 @@ namespace
                                  - law.evaluate(d - step, h, context).force)
                                 / (2 * step);
               EXPECT_NEAR(r.stiffness, fd, 1e-6 * std::abs(r.stiffness))
-                << "delta = " << d << ", delta_max = " << h.delta_max;
+                << "delta = " << d
+                << ", delta_max = " << MulticontactAdhesiveLaw::delta_max(h);
               ++checked;
               h = law.updated_history(d, h, context);
             }
@@ -396,12 +399,10 @@ namespace
   TEST(MulticontactAdhesive, HistoryChangesOnlyInUpdatedHistory)
   {
     const MulticontactAdhesiveLaw law = make_law(particle_b);
-    ContactHistory                h;
-    h.a_p                       = 1e-6;
-    h.a_B                       = 2e-6;
-    h.delta_max                 = 3e-6;
-    const ContactHistory  copy  = h;
-    const ContactResponse first = law.evaluate(2e-6, h);
+    ContactHistory                h   = MulticontactAdhesiveLaw::history(3e-6);
+    h[1]                              = 2e-6; // a slot the law does not declare
+    const ContactHistory  copy        = h;
+    const ContactResponse first       = law.evaluate(2e-6, h);
     // Trial states beyond delta_max leave no trace.
     law.evaluate(9e-6, h);
     law.evaluate(1e-7, h);
@@ -411,9 +412,8 @@ namespace
     EXPECT_EQ(first.stiffness, again.stiffness);
 
     const ContactHistory up = law.updated_history(5e-6, h);
-    EXPECT_EQ(up.delta_max, 5e-6);
-    EXPECT_EQ(up.a_p, h.a_p);
-    EXPECT_EQ(up.a_B, h.a_B);
+    EXPECT_EQ(MulticontactAdhesiveLaw::delta_max(up), 5e-6);
+    EXPECT_EQ(up[1], h[1]);
     EXPECT_EQ(law.updated_history(1e-6, h), h);
   }
 

@@ -50,7 +50,7 @@ TEST(NeighborsContactSet, HistorySurvivesRebuildsAndSeparation)
   ASSERT_GT(set.pairs.size(), 10u);
   // Mark every pair's history with its indices.
   for (auto &c : set.pairs)
-    c.history.a_p = 1e-9 * (1 + c.i * 1000 + c.j);
+    c.history[BondedElastoplasticLaw::a_p_slot] = 1e-9 * (1 + c.i * 1000 + c.j);
   const auto first = set.pairs.front();
   const auto rev   = set.revision();
   EXPECT_FALSE(set.update(p, walls, model));
@@ -66,9 +66,10 @@ TEST(NeighborsContactSet, HistorySurvivesRebuildsAndSeparation)
   bool kept_separated = false;
   for (const auto &c : set.pairs)
     {
-      if (c.history.a_p > 0.0)
+      if (BondedElastoplasticLaw::a_p(c.history) > 0.0)
         {
-          EXPECT_DOUBLE_EQ(c.history.a_p, 1e-9 * (1 + c.i * 1000 + c.j));
+          EXPECT_DOUBLE_EQ(BondedElastoplasticLaw::a_p(c.history),
+                           1e-9 * (1 + c.i * 1000 + c.j));
         }
       if (c.i == first.i && c.j == first.j)
         kept_separated = true;

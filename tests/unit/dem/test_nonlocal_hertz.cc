@@ -130,11 +130,8 @@ namespace
   TEST(NonlocalHertz, HistoryIsUnchanged)
   {
     const NonlocalHertzLaw law(50e-6, 3e9);
-    ContactHistory         history;
-    history.a_p               = 1e-6;
-    history.a_B               = 2e-6;
-    history.delta_max         = 3e-6;
-    const ContactHistory copy = history;
+    ContactHistory         history{{1e-6, 2e-6}};
+    const ContactHistory   copy = history;
     law.evaluate(1e-6, history, ContactContext{});
     EXPECT_EQ(history, copy);
     EXPECT_EQ(law.updated_history(1e-5, history, ContactContext{}), copy);

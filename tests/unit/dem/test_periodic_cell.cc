@@ -152,7 +152,10 @@ TEST(PeriodicDynamics, ContactAcrossTheBoundaryKeepsItsHistory)
   EXPECT_GT(dem.neighbour_rebuilds(), 10u);
   ASSERT_EQ(dem.contact_count(), 1u);
   EXPECT_NEAR(dem.pair_contacts()[0].overlap, delta, 1e-12);
-  EXPECT_NEAR(dem.pair_contacts()[0].history.delta_max, delta, 1e-12);
+  EXPECT_NEAR(MulticontactAdhesiveLaw::delta_max(
+                dem.pair_contacts()[0].history),
+              delta,
+              1e-12);
 }
 
 TEST(SizeDistributionFit, RecoversALogNormalFromItsQuantiles)

@@ -39,7 +39,7 @@ TEST(RveLoading, PackingIsLooseVirginAndReproducible)
   double worst_overlap = 0.0;
   for (const PeriodicContact &c : a.contacts.pairs)
     {
-      EXPECT_EQ(c.history.a_p, 0.0);
+      EXPECT_EQ(BondedElastoplasticLaw::a_p(c.history), 0.0);
       worst_overlap
         = std::max(worst_overlap,
                    2 * R - branch_vector(a.particles, a.cell, c).norm());

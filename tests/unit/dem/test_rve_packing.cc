@@ -61,7 +61,7 @@ TEST(RvePacking, DepositCompactedUniaxiallyToTheDensityAskedFor)
   const auto plastic_contacts = [](const PeriodicBed &b) {
     int n = 0;
     for (const PeriodicContact &c : b.contacts.pairs)
-      n += c.history.a_p > 0.0;
+      n += BondedElastoplasticLaw::a_p(c.history) > 0.0;
     return n;
   };
   const RveLoadingOptions balanced;

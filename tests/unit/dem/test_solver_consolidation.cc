@@ -35,22 +35,33 @@ TEST(SolverConsolidation, SolverResponseEqualsEquations3And4)
       const double n_p       = k.plastic_coefficient;
       const double a_p       = law.plastic_radius(2e-6);
       const auto   eq3_and_4 = [&](double gamma, ContactHistory h) {
-        if (gamma >= h.a_p * h.a_p / (2.0 * c2R))
+        if (gamma >= BondedElastoplasticLaw::a_p(h)
+                       * BondedElastoplasticLaw::a_p(h) / (2.0 * c2R))
           return gamma > 0.0
                      ? n_p * std::pow(std::sqrt(2.0 * c2R * gamma), 2.0 + 1.0 / m)
                      : 0.0;
         const double alpha
-          = 4.0 * k.effective_modulus / (3.0 * n_p * std::pow(h.a_p, 1.0 / m));
-        const double recovery = alpha * (h.a_p * h.a_p / (2.0 * c2R) - gamma);
-        if (recovery >= h.a_p)
+          = 4.0 * k.effective_modulus
+            / (3.0 * n_p * std::pow(BondedElastoplasticLaw::a_p(h), 1.0 / m));
+        const double recovery
+          = alpha
+            * (BondedElastoplasticLaw::a_p(h) * BondedElastoplasticLaw::a_p(h)
+                 / (2.0 * c2R)
+               - gamma);
+        if (recovery >= BondedElastoplasticLaw::a_p(h))
           return 0.0;
-        const double a = std::sqrt(h.a_p * h.a_p - recovery * recovery);
-        const double x = a / h.a_p;
-        double       P = 2.0 * n_p / pi * std::pow(h.a_p, 2.0 + 1.0 / m)
+        const double a = std::sqrt(BondedElastoplasticLaw::a_p(h)
+                                     * BondedElastoplasticLaw::a_p(h)
+                                   - recovery * recovery);
+        const double x = a / BondedElastoplasticLaw::a_p(h);
+        double       P = 2.0 * n_p / pi
+                   * std::pow(BondedElastoplasticLaw::a_p(h), 2.0 + 1.0 / m)
                    * (std::asin(x) - x * std::sqrt(1.0 - x * x));
-        if (h.a_B > 0.0 && a < h.a_B)
+        if (BondedElastoplasticLaw::a_B(h) > 0.0
+            && a < BondedElastoplasticLaw::a_B(h))
           P -= 2.0 * material1::K_Ic * std::sqrt(pi) * (1.0 + xi) * (1.0 + xi)
-               * std::pow(a, 1.5) * (h.a_B - a) / ((1.0 + xi) * h.a_B - a);
+               * std::pow(a, 1.5) * (BondedElastoplasticLaw::a_B(h) - a)
+               / ((1.0 + xi) * BondedElastoplasticLaw::a_B(h) - a);
         return P;
       };
       for (const ContactHistory h : {ContactHistory{0.0, 0.0},
@@ -61,7 +72,8 @@ TEST(SolverConsolidation, SolverResponseEqualsEquations3And4)
             const double ref = eq3_and_4(gamma, h);
             const double P = contact_response(ParticleLaw(law), gamma, h).force;
             EXPECT_NEAR(P, ref, 1e-12 * std::abs(ref) + 1e-300)
-              << "m = " << m << ", a_p = " << h.a_p << ", a_B = " << h.a_B
+              << "m = " << m << ", a_p = " << BondedElastoplasticLaw::a_p(h)
+              << ", a_B = " << BondedElastoplasticLaw::a_B(h)
               << ", gamma = " << gamma;
           }
     }
@@ -110,8 +122,8 @@ TEST(SolverConsolidation, LooseDepositJamsWithBalancedPunches)
               * s.mean_force);
   for (const PairContact &p : bed.contacts.pairs)
     {
-      EXPECT_EQ(p.history.a_p, 0.0);
-      EXPECT_EQ(p.history.a_B, 0.0);
+      EXPECT_EQ(BondedElastoplasticLaw::a_p(p.history), 0.0);
+      EXPECT_EQ(BondedElastoplasticLaw::a_B(p.history), 0.0);
     }
 }
 

@@ -61,8 +61,8 @@ TEST(SolverStiffness, EqualsCentralDifferenceOfResidual)
                               - bonded_law(c.law).breakage_overlap(a_p);
           a_p = bonded_law(c.law).plastic_radius(gamma + 0.3 * drop);
         }
-      c.history.a_p = a_p;
-      c.history.a_B = a_p;
+      c.history[BondedElastoplasticLaw::a_p_slot] = a_p;
+      c.history[BondedElastoplasticLaw::a_B_slot] = a_p;
       ++n_unloading;
     }
   for (const auto &c : bed.contacts.walls)

@@ -121,13 +121,12 @@ TEST(WaltonBraun, ConvergedStatesRaiseTheLargestOverlapOnly)
       EXPECT_NEAR(law.evaluate(delta, h).force, 1e4 * delta, 1e-15);
       h = law.updated_history(delta, h);
     }
-  EXPECT_DOUBLE_EQ(h.delta_max, 1e-5);
-  EXPECT_EQ(h.a_p, 0.0);
-  EXPECT_EQ(h.a_B, 0.0);
+  EXPECT_DOUBLE_EQ(WaltonBraunLaw::delta_max(h), 1e-5);
+  EXPECT_EQ(h[1], 0.0); // the slot the law does not declare
   for (const double delta : {8e-6, 3e-6, 8e-6})
     {
       h = law.updated_history(delta, h);
-      EXPECT_DOUBLE_EQ(h.delta_max, 1e-5);
+      EXPECT_DOUBLE_EQ(WaltonBraunLaw::delta_max(h), 1e-5);
     }
   EXPECT_NEAR(law.evaluate(8e-6, h).force, 0.048, 1e-15);
   EXPECT_NEAR(law.evaluate(1e-5, h).force, 0.1, 1e-15);
@@ -141,11 +140,11 @@ TEST(WaltonBraun, ConvergedStatesRaiseTheLargestOverlapOnly)
 TEST(WaltonBraun, UnloadsAlongTheBranchItWouldFollow)
 {
   ContactHistory loading;
-  loading.delta_max = 5e-6;
+  loading[WaltonBraunLaw::delta_max_slot] = 5e-6;
   EXPECT_NEAR(law.unloading_stiffness(1e-5, loading, {}), 2.6e4, 1e-9);
   EXPECT_TRUE(law.loads_plastically(1e-5, loading, {}));
   ContactHistory unloaded;
-  unloaded.delta_max = 1e-5;
+  unloaded[WaltonBraunLaw::delta_max_slot] = 1e-5;
   EXPECT_NEAR(law.unloading_stiffness(8e-6, unloaded, {}), 2.6e4, 1e-9);
   EXPECT_NEAR(law.unloading_stiffness(3e-6, unloaded, {}), -5e3, 1e-9);
   EXPECT_FALSE(law.loads_plastically(8e-6, unloaded, {}));
