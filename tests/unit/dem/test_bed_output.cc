@@ -5,11 +5,10 @@
 #include "dem/analysis/bed_statistics.h"
 #include "dem/io/particle_vtu.h"
 #include "tests/support/gonzalez_material1.h"
+#include "tests/support/vtu_text.h"
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
 #include <unistd.h>
 
 using namespace compax::dem;
@@ -65,19 +64,9 @@ TEST(ParticleVtu, SnapshotHasEveryParticleAndItsCoordination)
   const auto file  = std::filesystem::temp_directory_path()
                     / ("compax-vtu-" + std::to_string(::getpid()) + ".vtu");
   write_particles_vtu(file, bed);
-  std::ifstream     in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
-  EXPECT_NE(s.find("NumberOfPoints=\"3\""), std::string::npos);
-  // The middle sphere touches two, the ends one each.
-  const auto at = s.find("Name=\"coordination\"");
-  ASSERT_NE(at, std::string::npos);
-  std::istringstream values(s.substr(s.find('>', at) + 1));
-  int                a, b, c;
-  values >> a >> b >> c;
-  EXPECT_EQ(a, 1);
-  EXPECT_EQ(b, 2);
-  EXPECT_EQ(c, 1);
+  const compax::testing::VtuText vtu(file);
   std::filesystem::remove(file);
+  EXPECT_NE(vtu.text.find("NumberOfPoints=\"3\""), std::string::npos);
+  // The middle sphere touches two, the ends one each.
+  EXPECT_EQ(vtu.array("coordination", 3), (std::vector<double>{1, 2, 1}));
 }

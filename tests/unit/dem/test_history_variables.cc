@@ -10,14 +10,13 @@
 #include "dem/contact/walton_braun.h"
 #include "dem/io/particle_vtu.h"
 #include "tests/support/gonzalez_material1.h"
+#include "tests/support/vtu_text.h"
 
 #include <gtest/gtest.h>
 
 #include <cstring>
-#include <fstream>
 #include <memory>
 #include <set>
-#include <sstream>
 #include <string>
 #include <unistd.h>
 
@@ -100,19 +99,10 @@ TEST(HistoryVariables, SnapshotListsTheLargestDeclaredValueOfEachParticle)
   const auto file = std::filesystem::temp_directory_path()
                     / ("compax-history-" + std::to_string(::getpid()) + ".vtu");
   snapshot.write(file);
-  std::ifstream     in(file);
-  std::stringstream text;
-  text << in.rdbuf();
+  const compax::testing::VtuText vtu(file);
   std::filesystem::remove(file);
-  const std::string s = text.str();
   // Only the variable the law declares: delta_max, as max_largest_overlap.
-  EXPECT_EQ(s.find("max_plastic_radius"), std::string::npos);
-  const auto at = s.find("Name=\"max_largest_overlap\"");
-  ASSERT_NE(at, std::string::npos);
-  std::istringstream values(s.substr(s.find('>', at) + 1));
-  double             a, b, c;
-  values >> a >> b >> c;
-  EXPECT_DOUBLE_EQ(a, 2e-7);
-  EXPECT_DOUBLE_EQ(b, 5e-7);
-  EXPECT_DOUBLE_EQ(c, 5e-7);
+  EXPECT_FALSE(vtu.has_array("max_plastic_radius"));
+  EXPECT_EQ(vtu.array("max_largest_overlap", 3),
+            (std::vector<double>{2e-7, 5e-7, 5e-7}));
 }
