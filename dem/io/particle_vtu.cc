@@ -1,6 +1,7 @@
 #include "dem/io/particle_vtu.h"
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 
@@ -45,10 +46,12 @@ namespace compax::dem
     const std::vector<HistoryVariable> variables = history_variables(law);
     for (std::size_t v = 0; v < variables.size(); ++v)
       {
-        const std::string name = std::string("max_") + variables[v].name;
-        auto              it   = std::find_if(largest_history.begin(),
+        const char *name = variables[v].name;
+        auto        it   = std::find_if(largest_history.begin(),
                                largest_history.end(),
-                               [&](const auto &a) { return a.first == name; });
+                               [&](const auto &a) {
+                                 return std::strcmp(a.first, name) == 0;
+                               });
         if (it == largest_history.end())
           it = largest_history.insert(
             it, {name, std::vector<double>(points.size(), 0.0)});
@@ -109,7 +112,10 @@ namespace compax::dem
     write_array(out, "net_force", "Float64", net_force);
     write_array(out, "mean_contact_force", "Float64", mean_force);
     for (const auto &[name, largest] : largest_history)
-      write_array(out, name.c_str(), "Float64", largest);
+      write_array(out,
+                  ("max_" + std::string(name)).c_str(),
+                  "Float64",
+                  largest);
     write_array(out, "bonds", "Int32", bonds);
     out << "      </PointData>\n    </Piece>\n  </UnstructuredGrid>\n"
         << "</VTKFile>\n";

@@ -48,9 +48,10 @@ namespace compax::dem
     std::vector<int>             material, coordination, bonds;
     std::vector<double>          force_sum;
     std::vector<Eigen::Vector3d> net;
-    /// "max_<name>" and its per-particle values, for each declared
-    /// internal variable met so far.
-    std::vector<std::pair<std::string, std::vector<double>>> largest_history;
+    /// The name of each declared internal variable met so far (a law's
+    /// static string) and its per-particle largest value, written as
+    /// "max_<name>".
+    std::vector<std::pair<const char *, std::vector<double>>> largest_history;
   };
 
   /**
