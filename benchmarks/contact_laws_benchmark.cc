@@ -10,6 +10,7 @@
 #include "dem/contact/multicontact_adhesive.h"
 #include "dem/contact/nonlocal_hertz.h"
 #include "dem/contact/pair_properties.h"
+#include "dem/nonlocal/nonlocal_contact_network.h"
 
 #include <benchmark/benchmark.h>
 
@@ -326,10 +327,9 @@ namespace
   void
   BM_NonlocalFixedPoint_cubic(benchmark::State &state)
   {
-    const int    n = static_cast<int>(state.range(0));
-    const double R = 100e-6, E = 2.58e8, nu = 0.3, d = 1.98 * R;
-    const double n_H = 4.0 / 3.0 * effective_modulus(E, nu, E, nu)
-                       * std::sqrt(effective_radius(R, R));
+    const int                 n = static_cast<int>(state.range(0));
+    const double              R = 100e-6, E = 2.58e8, nu = 0.3, d = 1.98 * R;
+    const ParticleLaw         law = HertzLaw::for_pair(R, E, nu, R, E, nu);
     std::vector<NonlocalBody> bodies(n * n * n, NonlocalBody{R, E, nu});
     std::vector<NonlocalContactNetwork::Contact> contacts;
     std::vector<double>                          gamma;
@@ -342,13 +342,13 @@ namespace
           {
             if (i + 1 < n)
               contacts.push_back(
-                {id(i, j, k), id(i + 1, j, k), Eigen::Vector3d::UnitX(), n_H});
+                {id(i, j, k), id(i + 1, j, k), Eigen::Vector3d::UnitX(), &law});
             if (j + 1 < n)
               contacts.push_back(
-                {id(i, j, k), id(i, j + 1, k), Eigen::Vector3d::UnitY(), n_H});
+                {id(i, j, k), id(i, j + 1, k), Eigen::Vector3d::UnitY(), &law});
             if (k + 1 < n)
               contacts.push_back(
-                {id(i, j, k), id(i, j, k + 1), Eigen::Vector3d::UnitZ(), n_H});
+                {id(i, j, k), id(i, j, k + 1), Eigen::Vector3d::UnitZ(), &law});
           }
     gamma.assign(contacts.size(), 2 * R - d);
     NonlocalContactNetwork network;

@@ -11,6 +11,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -58,8 +59,23 @@ namespace compax::coupling
     declare_registered_laws(prm, true);
   }
 
-  /// Reads the subsection Contact; rejects the nonlocal formulation with a
-  /// law other than elastic (InputError naming Contact/Formulation).
+  /// Whether the registered law of @p choice is elastic (keeps no internal
+  /// variables), so that the nonlocal formulation can be layered on it.
+  inline bool
+  registered_law_is_elastic(const ContactChoice &choice)
+  {
+    if (!choice.registered || choice.registered->context)
+      return false;
+    // Any pair of bodies: which variables a law keeps does not depend on
+    // them.
+    const dem::ContactBodies unit_spheres{1.0, 1.0, 0.3, 1.0, 1.0, 0.3};
+    return choice.registered->make(choice.values, unit_spheres)
+      ->history_variables()
+      .empty();
+  }
+
+  /// Reads the subsection Contact; rejects the nonlocal formulation on a
+  /// law that is not elastic (InputError naming Contact/Formulation).
   inline ContactChoice
   get_contact_choice(dealii::ParameterHandler &prm)
   {
@@ -67,20 +83,42 @@ namespace compax::coupling
     const std::string law         = prm.get("Contact law");
     const std::string formulation = prm.get("Formulation");
     prm.leave_subsection();
-    if (formulation == "nonlocal" && law != "elastic")
-      input::reject_entry(
-        "Contact/Formulation",
-        formulation,
-        "the nonlocal formulation (Gonzalez & Cuitino 2012) is "
-        "for elastic frictionless spheres; it needs Contact/"
-        "Contact law = elastic (here: "
-          + law
-          + "; the bonded elasto-plastic law's plasticity and "
-            "solid bridges are outside it)");
     ContactChoice choice{law, formulation, dem::find_contact_law(law), {}};
     if (choice.registered)
       choice.values = get_registered_law_values(prm, *choice.registered);
+    if (formulation == "nonlocal" && law != "elastic"
+        && !registered_law_is_elastic(choice))
+      input::reject_entry(
+        "Contact/Formulation",
+        formulation,
+        "the nonlocal formulation (Gonzalez & Cuitino 2012) is a layer on "
+        "an elastic law; it needs Contact/Contact law = elastic or a "
+        "registered law without internal variables (here: "
+          + law
+          + ", whose internal variables, such as a plastic radius, a solid "
+            "bridge or a largest overlap, are outside it)");
     return choice;
+  }
+
+  /// Whether the chosen contacts are solved as elastic spheres
+  /// (NonlocalBedSystem): Contact law = elastic, or the nonlocal
+  /// formulation on an elastic registered law.
+  inline bool
+  solved_as_elastic_spheres(const ContactChoice &choice)
+  {
+    return choice.law == "elastic" || choice.formulation == "nonlocal";
+  }
+
+  /// The local laws of the elastic-sphere solver: those of @p model when a
+  /// registered law was chosen (after apply_contact_choice()), else none
+  /// (Hertz's law of the materials).
+  inline std::optional<dem::ContactModel>
+  elastic_local_laws(const ContactChoice     &choice,
+                     const dem::ContactModel &model)
+  {
+    if (!choice.registered)
+      return std::nullopt;
+    return model;
   }
 
   /// Every contact of @p model follows the chosen registered law, if one

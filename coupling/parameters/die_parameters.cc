@@ -301,10 +301,12 @@ namespace compax::coupling
       "hertz: independent contacts (local laws); nonlocal: the nonlocal "
       "contact formulation of Gonzalez & Cuitino 2012 (Eqs. 9, 10, "
       "Algorithm 1: the deformation of a particle by all its contact forces "
-      "enters each contact), needs Contact law = elastic. With Contact law "
-      "= elastic the equilibria are solved by a trust region on the "
+      "enters each contact), a layer on an elastic law: Contact law = "
+      "elastic (Hertz) or a registered law without internal variables "
+      "(hertz). With Contact law = elastic, or the nonlocal formulation, "
+      "the equilibria are solved by a trust region on the "
       "frozen-angle Hessian with an exact-Jacobian Newton-Krylov finish "
-      "(consolidation with Hertz contacts), for both formulations.");
+      "(consolidation with the local law alone), for both formulations.");
   }
 
   DieInput
@@ -479,16 +481,17 @@ namespace compax::coupling
     prm.leave_subsection();
 
     const ContactChoice contact = get_contact_choice(prm);
-    if (contact.law == "elastic")
+    apply_contact_choice(contact, model);
+    if (solved_as_elastic_spheres(contact))
       {
         dem::ElasticDieOptions elastic;
         for (const auto &m : materials)
           elastic.materials.push_back({m.youngs_modulus, m.poisson_ratio});
-        elastic.nonlocal = contact.formulation == "nonlocal";
+        elastic.nonlocal       = contact.formulation == "nonlocal";
+        elastic.bed.local_laws = elastic_local_laws(contact, model);
         set_elastic_solver_tolerances(elastic, equilibrium);
         protocol.elastic = elastic;
       }
-    apply_contact_choice(contact, model);
 
     // A resumed run continues the checkpoint's compaction path: every entry
     // but those that only say where it stops, how often it checkpoints and

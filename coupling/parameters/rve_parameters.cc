@@ -484,10 +484,12 @@ namespace compax::coupling
       "with the bonded law's elastic branch, virgin).",
       "hertz: independent contacts; nonlocal: the nonlocal contact "
       "formulation of Gonzalez & Cuitino 2012 (Algorithm 1 at every "
-      "residual, contacts through lattice images included), needs Contact "
-      "law = elastic. Elastic cells are solved by a trust region on the "
+      "residual, contacts through lattice images included), a layer on an "
+      "elastic law: Contact law = elastic (Hertz) or a registered law "
+      "without internal variables (hertz). Elastic cells are solved by a trust "
+      "region on the "
       "frozen-angle Hessian with an exact-Jacobian Newton-Krylov finish, "
-      "below Solver/Jamming pressure by FIRE with Hertz contacts.");
+      "below Solver/Jamming pressure by FIRE with the local law alone.");
   }
 
   RveCell
@@ -720,12 +722,14 @@ namespace compax::coupling
     s.loading = get_rve_loading_options(prm);
 
     const coupling::ContactChoice contact = coupling::get_contact_choice(prm);
-    if (contact.law == "elastic")
+    coupling::apply_contact_choice(contact, s.model);
+    if (coupling::solved_as_elastic_spheres(contact))
       {
         dem::NonlocalRveOptions e;
         const auto             &m = s.model.material(0);
         e.materials               = {{m.youngs_modulus, m.poisson_ratio}};
         e.nonlocal                = contact.formulation == "nonlocal";
+        e.bed.local_laws = coupling::elastic_local_laws(contact, s.model);
         coupling::set_elastic_solver_tolerances(e, s.loading.equilibrium);
         e.jamming_pressure     = s.loading.jamming_pressure;
         e.fire_iterations      = s.loading.fire_iterations;
@@ -733,7 +737,6 @@ namespace compax::coupling
         e.force_floor_fraction = s.loading.force_floor_fraction;
         s.elastic              = e;
       }
-    coupling::apply_contact_choice(contact, s.model);
 
     if (s.cell_sizes.empty())
       check_cell_width("Packing/Number of particles",

@@ -41,23 +41,6 @@ namespace compax::dem
     return r;
   }
 
-  ContactResponse
-  HertzLaw::response(const double gamma) const
-  {
-    if (gamma <= 0.0)
-      return {};
-    const double root = std::sqrt(gamma);
-    return {n_H * gamma * root, 1.5 * n_H * root, std::sqrt(R * gamma)};
-  }
-
-  ContactResponse
-  HertzLaw::evaluate(const double gamma,
-                     const ContactHistory &,
-                     const ContactContext &) const
-  {
-    return response(gamma);
-  }
-
   ContactHistory
   HertzLaw::updated_history(const double,
                             const ContactHistory &history,

@@ -3,6 +3,8 @@
 #include "dem/contact/contact_law.h"
 #include "dem/contact/contact_law_registry.h"
 
+#include <cmath>
+
 namespace compax::dem
 {
   /**
@@ -40,9 +42,12 @@ namespace compax::dem
     using ContactLaw::updated_history;
 
     ContactResponse
-    evaluate(double                gamma,
-             const ContactHistory &history,
-             const ContactContext &context) const override;
+    evaluate(double gamma,
+             const ContactHistory &,
+             const ContactContext &) const override
+    {
+      return response(gamma);
+    }
 
     ContactHistory
     updated_history(double                gamma,
@@ -55,9 +60,16 @@ namespace compax::dem
       return "hertz";
     }
 
-    /// Force, stiffness and radius of the pure Hertz law at overlap gamma.
+    /// Force, stiffness and radius of the pure Hertz law at overlap gamma
+    /// (inline: the nonlocal fixed point evaluates it in every sweep).
     ContactResponse
-    response(double gamma) const;
+    response(const double gamma) const
+    {
+      if (gamma <= 0.0)
+        return {};
+      const double root = std::sqrt(gamma);
+      return {n_H * gamma * root, 1.5 * n_H * root, std::sqrt(R * gamma)};
+    }
 
     /// The Hertz coefficient n_H = 4/3 E sqrt(R) [N/m^{3/2}].
     double

@@ -3,8 +3,6 @@
 #include "dem/contact/contact_law.h"
 #include "dem/contact/contact_law_registry.h"
 
-#include <Eigen/Core>
-
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -13,11 +11,12 @@
  * @file
  * Nonlocal contact formulation of elastic spheres (Gonzalez & Cuitino 2012):
  * the Hertz law shifted by the nonlocal overlap gamma_NL that the other
- * contact forces on both particles induce at a contact (Eqs. 5, 9, 10), the
+ * contact forces on both particles induce at a contact (Eqs. 5, 9, 10), and
+ * two closed configurations used for verification: Tatara's two spheres
+ * (Eqs. 11, 12) and the 1-D chain between rigid plates (Eq. 17). The
  * fixed-point iteration that makes forces and gamma_NL consistent over a
- * contact network (Algorithm 1), and two closed configurations used for
- * verification: Tatara's two spheres (Eqs. 11, 12) and the 1-D chain between
- * rigid plates (Eq. 17).
+ * contact network (Algorithm 1), over any elastic local law, is
+ * dem/nonlocal/nonlocal_contact_network.h.
  */
 
 namespace compax::dem
@@ -171,151 +170,6 @@ namespace compax::dem
     /// Poisson's ratio nu [-].
     double poisson_ratio;
   };
-
-  /**
-   * The contact network of Algorithm 1 in flat (CSR) arrays: for each
-   * contact c its Hertz coefficient n_H[c] and the list of the contacts
-   * incident to it (sharing particle i or particle j) with the influence
-   * coefficient w/P of Eq. (5) [m/N] that each of them exerts on c. The
-   * arrays keep their capacity across clear(), so rebuilding the network at
-   * each residual evaluation allocates nothing once warmed up.
-   *
-   * Two ways to fill it:
-   * - streaming: add_contact(n_H), then add_incident() for every other
-   *   contact on either of its particles, then the next contact;
-   * - geometric: build(), from the contacts' particle indices, unit normals
-   *   and the bodies' radii and elastic constants (angles computed here).
-   * Influences of rigid bodies are zero and are not stored.
-   */
-  class NonlocalContactNetwork
-  {
-  public:
-    /// One contact for build(): particles i and j, the unit normal from i
-    /// towards j, and n_H [N/m^{3/2}]. A wall is a body like any other
-    /// (rigid radius and modulus); its normal points from i into the wall.
-    struct Contact
-    {
-      std::size_t     particle_i;
-      std::size_t     particle_j;
-      Eigen::Vector3d normal;
-      double          n_H;
-    };
-
-    /// Remove all contacts, keep the capacity.
-    void
-    clear();
-
-    /// Reserve room for contacts and incidences (pairs of incident contacts).
-    void
-    reserve(std::size_t n_contacts, std::size_t n_incidences);
-
-    /// Append a contact with Hertz coefficient n_H; returns its index. The
-    /// add_incident() calls that follow belong to it.
-    std::size_t
-    add_contact(double n_H);
-
-    /// Contact `other` acts on a particle `body` shared with the contact
-    /// added last, at angle theta [rad] from it.
-    void
-    add_incident(std::size_t other, double theta, const NonlocalBody &body);
-
-    /// Same with a precomputed influence coefficient w/P [m/N].
-    void
-    add_influence(std::size_t other, double compliance);
-
-    /**
-     * Build the network of the given contacts between bodies (indices into
-     * `bodies`). O(sum over particles of their contacts squared) =
-     * O(n̄ N_c); uses internal scratch arrays that keep their capacity.
-     */
-    void
-    build(const std::vector<NonlocalBody> &bodies,
-          const std::vector<Contact>      &contacts);
-
-    std::size_t
-    n_contacts() const
-    {
-      return n_H_.size();
-    }
-
-    std::size_t
-    n_incidences() const
-    {
-      return other_.size();
-    }
-
-    /// Hertz coefficient of contact c.
-    double
-    n_H(std::size_t c) const
-    {
-      return n_H_[c];
-    }
-
-    /// CSR arrays: the influences on contact c are entries
-    /// offset()[c] .. offset()[c+1]-1 of other() and compliance().
-    const std::vector<std::size_t> &
-    offset() const
-    {
-      return offset_;
-    }
-
-    const std::vector<std::size_t> &
-    other() const
-    {
-      return other_;
-    }
-
-    const std::vector<double> &
-    compliance() const
-    {
-      return compliance_;
-    }
-
-  private:
-    std::vector<double>      n_H_;
-    std::vector<std::size_t> offset_{0};
-    std::vector<std::size_t> other_;
-    std::vector<double>      compliance_;
-    // Scratch for build(): contacts of each particle, CSR.
-    std::vector<std::size_t> particle_offset_;
-    std::vector<std::size_t> particle_contacts_;
-  };
-
-  /// Outcome of solve_nonlocal_fixed_point().
-  struct NonlocalFixedPointResult
-  {
-    /// Sweeps performed.
-    unsigned int iterations = 0;
-    /// Whether the last sweep changed gamma_NL by less than the tolerance.
-    bool converged = false;
-    /// max_c |change of gamma_NL[c]| in the last sweep [m].
-    double change = 0.0;
-  };
-
-  /**
-   * Algorithm 1 of Gonzalez & Cuitino 2012: Jacobi fixed-point iteration of
-   * the nonlocal overlaps. One sweep computes P[c] = n_H (gamma + gamma_NL)_+
-   * ^{3/2} for all contacts from the current gamma_NL, then
-   * gamma_NL[c] = sum over incident d of (w/P)_{cd} P[d]; it stops when
-   * max_c |change| < tolerance [m] or after max_iterations sweeps. On return
-   * `force` holds the forces of the final gamma_NL (Algorithm 1, line 25).
-   * The result does not depend on the order of the contacts (Jacobi, not
-   * Gauss-Seidel). O(N_c + n_incidences) per sweep, no allocation once
-   * `gamma_nl` and `force` have the network's size.
-   *
-   * @param gamma     overlaps, one per contact [m]
-   * @param gamma_nl  nonlocal overlaps [m]; resized to the network; the
-   *                  starting guess when warm_start, else started from 0
-   * @param force     contact forces [N]; resized to the network
-   */
-  NonlocalFixedPointResult
-  solve_nonlocal_fixed_point(const NonlocalContactNetwork &network,
-                             const std::vector<double>    &gamma,
-                             std::vector<double>          &gamma_nl,
-                             std::vector<double>          &force,
-                             double                        tolerance,
-                             unsigned int                  max_iterations,
-                             bool                          warm_start = false);
 
   /**
    * Lower root s of s - kappa s^{3/2} = gamma (kappa >= 0), the branch that

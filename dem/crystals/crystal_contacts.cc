@@ -29,13 +29,12 @@ namespace compax::dem
       , material(material)
       , formulation(formulation)
       , options(options)
-      , n_H(HertzLaw::for_pair(material.radius,
+      , law(HertzLaw::for_pair(material.radius,
                                material.youngs_modulus,
                                material.poisson_ratio,
                                material.radius,
                                material.youngs_modulus,
-                               material.poisson_ratio)
-              .coefficient())
+                               material.poisson_ratio))
   {
     if (!(material.radius > 0.0) || !(material.youngs_modulus > 0.0)
         || !(material.poisson_ratio > -1.0 && material.poisson_ratio < 0.5))
@@ -87,7 +86,7 @@ namespace compax::dem
                  nu = material.poisson_ratio;
     for (std::size_t i = 0; i < n; ++i)
       {
-        network.add_contact(n_H);
+        network.add_contact(law);
         if (!coupled)
           continue;
         for (std::size_t j = 0; j < n; ++j)

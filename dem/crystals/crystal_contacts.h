@@ -1,7 +1,7 @@
 #pragma once
 
-#include "dem/contact/nonlocal_hertz.h"
 #include "dem/crystals/granular_crystal.h"
+#include "dem/nonlocal/nonlocal_contact_network.h"
 
 #include <Eigen/Core>
 
@@ -169,7 +169,7 @@ namespace compax::dem
     double
     hertz_coefficient() const
     {
-      return n_H;
+      return std::get<HertzLaw>(law).coefficient();
     }
 
     const CrystalLattice &
@@ -182,11 +182,13 @@ namespace compax::dem
     void
     build_network();
 
-    CrystalLattice               crystal;
-    CrystalMaterial              material;
-    CrystalFormulation           formulation;
-    CrystalContactOptions        options;
-    double                       n_H;
+    CrystalLattice        crystal;
+    CrystalMaterial       material;
+    CrystalFormulation    formulation;
+    CrystalContactOptions options;
+    /// Hertz's law of two spheres of the crystal, the local law of every
+    /// contact.
+    ParticleLaw                  law;
     std::vector<Eigen::Vector3d> reference;
     /// Index of -d for every candidate d.
     std::vector<std::size_t>     opposite;

@@ -54,7 +54,7 @@ namespace compax::dem
      * Consolidation of a loose deposit up to jamming: the upper punch
      * advances in height-strain increments (options.initial_strain_
      * increment, grown up to max_strain_increment while the punch carries
-     * no force) and the bed relaxes by FIRE with Hertz contacts (below
+     * no force) and the bed relaxes by FIRE with the local law alone (below
      * jamming the overlaps, hence the nonlocal terms, are negligible) to
      * options.relative_tolerance, until the relaxed bed carries
      * options.jamming_pressure on the upper punch or reaches max_density.

@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
+#include <variant>
 
 namespace compax::dem
 {
@@ -96,6 +99,21 @@ namespace compax::dem
       , r_mean(particles.mean_radius())
       , skin_(options.skin * particles.mean_radius())
   {
+    if (!opts.local_laws)
+      return;
+    const ContactModel &model = *opts.local_laws;
+    if (model.n_materials() < materials.size())
+      throw std::invalid_argument("NonlocalBedSystem: the local laws know "
+                                  + std::to_string(model.n_materials())
+                                  + " materials, the bed has "
+                                  + std::to_string(materials.size()));
+    const ParticleLaw law = model.wall_law(0, r_mean);
+    if (!elastic_law(law))
+      throw std::invalid_argument(
+        "the nonlocal formulation (Gonzalez & Cuitino 2012) needs an "
+        "elastic local law; "
+        + std::visit([](const auto &l) { return l.name(); }, law)
+        + " keeps internal variables");
   }
 
   NonlocalBedSystem::NonlocalBedSystem(
@@ -169,12 +187,25 @@ namespace compax::dem
       }
     const std::size_t n = keys.size();
 
-    // Hertz coefficients (Eq. 9).
-    n_H.resize(n);
+    // The local law of every candidate: the chosen elastic law, or Hertz's
+    // (Eq. 9).
+    laws.clear();
+    laws.reserve(n);
     for (std::size_t c = 0; c < n; ++c)
       {
-        const Key             &k  = keys[c];
-        const ElasticMaterial &mi = materials[particles.materials[k.i]];
+        const Key         &k  = keys[c];
+        const unsigned int ai = particles.materials[k.i];
+        if (opts.local_laws)
+          {
+            laws.push_back(
+              k.j < N ? opts.local_laws->pair_law(ai,
+                                                  particles.radii[k.i],
+                                                  particles.materials[k.j],
+                                                  particles.radii[k.j])
+                      : opts.local_laws->wall_law(ai, particles.radii[k.i]));
+            continue;
+          }
+        const ElasticMaterial &mi = materials[ai];
         double                 R, E;
         if (k.j < N)
           {
@@ -193,7 +224,7 @@ namespace compax::dem
                                   rigid,
                                   0.0);
           }
-        n_H[c] = 4.0 / 3.0 * E * std::sqrt(R);
+        laws.emplace_back(HertzLaw(R, E));
       }
 
     // Warm start: carry gamma_NL of the surviving candidates over (both
@@ -322,7 +353,7 @@ namespace compax::dem
         network.clear();
         for (std::size_t c = 0; c < n; ++c)
           {
-            network.add_contact(n_H[c]);
+            network.add_contact(laws[c]);
             for (std::size_t q = incidence_offset[c];
                  q < incidence_offset[c + 1];
                  ++q)
@@ -374,15 +405,14 @@ namespace compax::dem
         gamma_nl.assign(n, 0.0);
         fixed_point_ = {0, true, 0.0};
         for (std::size_t c = 0; c < n; ++c)
-          force[c]
-            = gamma[c] > 0.0 ? n_H[c] * gamma[c] * std::sqrt(gamma[c]) : 0.0;
+          force[c] = law_response(laws[c], gamma[c], {}).force;
       }
 
     double sum_abs = 0.0;
     for (std::size_t c = 0; c < n; ++c)
       {
-        const double s = gamma[c] + gamma_nl[c];
-        stiffness[c]   = s > 0.0 ? 1.5 * n_H[c] * std::sqrt(s) : 0.0;
+        stiffness[c]
+          = law_response(laws[c], gamma[c] + gamma_nl[c], {}).stiffness;
         const double P = force[c];
         if (P == 0.0)
           continue;

@@ -1,16 +1,18 @@
 #pragma once
 
-#include "dem/contact/nonlocal_hertz.h"
 #include "dem/neighbors/cell_grid.h"
+#include "dem/nonlocal/nonlocal_contact_network.h"
 #include "dem/nonlocal/nonlocal_walls.h"
 #include "dem/nonlocal/square_die.h"
 #include "dem/particles/particle_system.h"
 #include "dem/periodic/periodic_pairs.h"
+#include "dem/solver/contact_model.h"
 #include "dem/solver/equilibrium_system.h"
 
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace compax::dem
@@ -28,7 +30,7 @@ namespace compax::dem
   struct NonlocalBedOptions
   {
     /// Nonlocal formulation (Gonzalez & Cuitino 2012, Eqs. 9, 10 and
-    /// Algorithm 1); false gives Hertz theory (gamma_NL = 0).
+    /// Algorithm 1); false gives the local law alone (gamma_NL = 0).
     bool nonlocal = true;
     /// Verlet skin of the candidate contacts, times the mean radius [-].
     double skin = 0.25;
@@ -42,15 +44,24 @@ namespace compax::dem
     /// (Newton iterates move little); false starts from gamma_NL = 0 as in
     /// the paper.
     bool warm_start = true;
+    /// The local law of every contact, on which the nonlocal formulation
+    /// is the layer: the laws of a ContactModel that chose an elastic
+    /// registered law (elastic_law(); checked at construction,
+    /// std::invalid_argument otherwise), its materials numbered as the
+    /// bed's. Empty: Hertz's law of the ElasticMaterial constants (Eq. 9).
+    /// The ElasticMaterial constants give the nonlocal terms (Eq. 5) in
+    /// either case.
+    std::optional<ContactModel> local_laws;
   };
 
   /**
    * Elastic frictionless spheres of several materials in a die (the
    * square die of SquareDie: four flat die walls and two punches; or the
    * cylindrical die of DieWalls, whose curved wall's normal turns with the
-   * particle; any NonlocalWalls) as an EquilibriumSystem, with Hertz contacts
-   * or with the nonlocal contact formulation of Gonzalez & Cuitino 2012. No
-   * adhesion, no friction.
+   * particle; any NonlocalWalls) as an EquilibriumSystem, with local elastic
+   * contacts (Hertz, or the elastic law of NonlocalBedOptions::local_laws)
+   * or with the nonlocal contact formulation of Gonzalez & Cuitino 2012 as a
+   * layer on them. No friction.
    *
    * Contacts. The candidates are the pairs and particle-wall pairs closer
    * than the Verlet skin; the list is rebuilt when a particle moved farther
@@ -63,14 +74,16 @@ namespace compax::dem
    * contacts on a common deformable particle; walls are rigid) are
    * refreshed for the current angles, Algorithm 1 (solve_nonlocal_fixed_
    * point) finds gamma_NL, warm-started from the previous call, and
-   * P_c = n_H (gamma_c + gamma_NL,c)_+^{3/2} (Eq. 10) are assembled into
+   * P_c = f_c(gamma_c + gamma_NL,c), f_c the contact's local law (Eq. 10:
+   * n_H (gamma_c + gamma_NL,c)_+^{3/2} for Hertz), are assembled into
    * F = sum_c P_c d gamma_c / dx, the out-of-balance force with the sign
    * of an energy gradient (as ContactAssembler). Cost O(n̄ N_c) per sweep.
    * If Algorithm 1 does not converge (beyond the limit point of the
    * formulation) F is NaN, which the solvers reject.
    *
-   * Stiffness. assemble() gives the approximate K: the local Hertz
-   * stiffness 3/2 n_H (gamma + gamma_NL)^{1/2} at the nonlocal overlap plus
+   * Stiffness. assemble() gives the approximate K: the local law's
+   * stiffness f_c'(gamma + gamma_NL) at the nonlocal overlap (3/2 n_H
+   * (gamma + gamma_NL)^{1/2} for Hertz) plus
    * the geometric terms, on the pair pattern, symmetric.
    * apply_jacobian() gives the exact product J v = dF/dx v, including
    * d gamma_NL/dx through the linearized fixed point
@@ -309,7 +322,7 @@ namespace compax::dem
     bool                                         dirty    = true;
     std::uint64_t                                revision = 0;
     std::vector<Key>                             keys, old_keys;
-    std::vector<double>                          n_H;
+    std::vector<ParticleLaw>                     laws;
     std::vector<Eigen::Vector3d>                 reference;
     std::array<double, NonlocalWalls::max_walls> reference_walls{};
     CellGrid                                     grid;

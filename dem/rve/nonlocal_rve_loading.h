@@ -45,7 +45,7 @@ namespace compax::dem
    * (map_affinely) and solves for the fluctuations at the fixed lattice
    * with a NonlocalBedSystem on bed.particles and bed.cell (periodic
    * images) by TrustRegionNewton (nonlocal_equilibrium_options()); below the
-   * jamming pressure FIRE with Hertz contacts relaxes the cell instead. A
+   * jamming pressure FIRE with the local law alone relaxes the cell instead. A
    * failed sub-step is undone and halved. The law has no internal variables:
    * bed.contacts is left alone (it holds no state of this law).
    */

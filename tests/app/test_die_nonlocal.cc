@@ -51,3 +51,47 @@ TEST_F(DieNonlocal, NonlocalWithBondedLawIsRefused)
   const auto r = expect_bonded_nonlocal_refused("die", tiny_bed);
   EXPECT_NE(r.err.find("nonlocal"), std::string::npos) << r.err;
 }
+
+// The nonlocal formulation is a layer on any elastic law: on the registry's
+// Hertz law it follows the built-in elastic (Hertz) run, row by row, to
+// the solver's tolerance (the two differ only in the rounding of the wall
+// contacts' effective radius, R against 1/(1/R + 1/inf)).
+TEST_F(DieNonlocal, LayerOnTheRegisteredHertzLawFollowsTheElasticRun)
+{
+  write("elastic.prm", tiny_bed("elastic", "nonlocal"));
+  const auto e = compax("die elastic.prm -o elastic");
+  ASSERT_EQ(e.exit_code, 0) << e.err << e.out;
+  write("registered.prm", tiny_bed("hertz", "nonlocal"));
+  const auto r = compax("die registered.prm -o registered");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  EXPECT_NE(r.out.find("nonlocal contact formulation"), std::string::npos);
+
+  const Csv elastic(folder / "elastic" / "die.csv");
+  const Csv registered(folder / "registered" / "die.csv");
+  ASSERT_EQ(registered.rows(), elastic.rows());
+  const auto &P       = elastic.column.at("upper_punch_force");
+  double      largest = 0.0;
+  for (const double p : P)
+    largest = std::max(largest, std::abs(p));
+  ASSERT_GT(largest, 0.0);
+  for (std::size_t i = 0; i < elastic.rows(); ++i)
+    {
+      EXPECT_NEAR(registered.column.at("relative_density")[i],
+                  elastic.column.at("relative_density")[i],
+                  1e-9);
+      EXPECT_NEAR(registered.column.at("upper_punch_force")[i],
+                  P[i],
+                  1e-6 * largest)
+        << "row " << i;
+    }
+}
+
+TEST_F(DieNonlocal, NonlocalOnALawWithInternalVariablesIsRefused)
+{
+  write("bad.prm", tiny_bed("walton-braun", "nonlocal"));
+  const auto r = compax("die bad.prm -o bad");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("Contact/Formulation"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("walton-braun"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(folder / "bad" / "die.csv"));
+}

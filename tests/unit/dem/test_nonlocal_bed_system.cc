@@ -4,6 +4,7 @@
 // form of the chain between plates (Eqs. 11, 17, solved here by
 // bisection), and the balance of the wall forces at equilibrium.
 
+#include "dem/contact/contact_law_registry.h"
 #include "dem/contact/pair_properties.h"
 #include "dem/nonlocal/nonlocal_bed_system.h"
 #include "dem/nonlocal/square_die_compaction.h"
@@ -17,6 +18,8 @@
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace
@@ -105,6 +108,84 @@ namespace
     system.residual(Fnl);
     EXPECT_LE((Fnl - ref).cwiseAbs().maxCoeff(),
               1e-12 * ref.cwiseAbs().maxCoeff());
+  }
+
+  /// The laws of @p law_name from the registry (at its default parameters)
+  /// between spheres of two_materials' elastic constants.
+  ContactModel
+  registered_model(const std::string &law_name)
+  {
+    std::vector<ElastoplasticMaterial> materials;
+    for (const ElasticMaterial &m : two_materials)
+      materials.push_back({m.youngs_modulus, m.poisson_ratio, 150e6, 2.0});
+    ContactModel                model(materials, {{0.0, 0.0}, {0.0, 0.0}});
+    const RegisteredContactLaw *law = find_contact_law(law_name);
+    LawParameterValues          values;
+    for (const LawParameter &p : law->parameters)
+      values[p.name] = p.default_value;
+    model.use_registered_law(*law, values);
+    return model;
+  }
+
+  // The nonlocal formulation is a layer on the local law of each contact:
+  // on the registry's Hertz law it gives the forces of the built-in Hertz
+  // contacts (Eq. 9), without and with the nonlocal terms, and the exact
+  // Jacobian, whose D = dP/ds now comes from the law, is still the central
+  // difference of the residual.
+  TEST(NonlocalBedSystem, LayerOnTheRegisteredHertzLawIsTheHertzFormulation)
+  {
+    for (const bool nonlocal : {false, true})
+      {
+        Cluster            c = make_cluster(2);
+        NonlocalBedOptions o;
+        o.nonlocal                   = nonlocal;
+        o.fixed_point_tolerance      = 1e-15;
+        o.max_fixed_point_iterations = 100000;
+        NonlocalBedSystem built_in(c.particles, two_materials, c.die, o);
+        o.local_laws = registered_model("hertz");
+        NonlocalBedSystem layered(c.particles, two_materials, c.die, o);
+        Eigen::VectorXd   F, G;
+        built_in.residual(F);
+        layered.residual(G);
+        ASSERT_GT(F.norm(), 0.0);
+        EXPECT_LE((G - F).cwiseAbs().maxCoeff(),
+                  1e-12 * F.cwiseAbs().maxCoeff())
+          << "nonlocal " << nonlocal;
+
+        std::mt19937          gen(3);
+        const Eigen::VectorXd v = random_vector(gen, 3 * c.particles.size());
+        Eigen::VectorXd       Jv;
+        layered.apply_jacobian(v, Jv);
+        const Eigen::VectorXd fd
+          = central_difference(layered, v, 1e-8 * 100e-6);
+        EXPECT_LE((Jv - fd).norm(), 1e-6 * fd.norm())
+          << "nonlocal " << nonlocal;
+      }
+  }
+
+  // Gonzalez & Cuitino's far field shifts the argument of an elastic law;
+  // a law with internal variables (the hysteretic spring's largest overlap,
+  // the bonded law's plastic radius and bridge) is refused by name.
+  TEST(NonlocalBedSystem, RefusesALocalLawWithInternalVariables)
+  {
+    Cluster            c = make_cluster(1);
+    NonlocalBedOptions o;
+    o.local_laws = registered_model("walton-braun");
+    try
+      {
+        NonlocalBedSystem system(c.particles, two_materials, c.die, o);
+        ADD_FAILURE() << "a Walton-Braun law was accepted";
+      }
+    catch (const std::invalid_argument &e)
+      {
+        EXPECT_NE(std::string(e.what()).find("walton-braun"), std::string::npos)
+          << e.what();
+      }
+    o.local_laws
+      = ContactModel({{19e9, 0.30, 150e6, 2.0}, {7e9, 0.2, 150e6, 2.0}},
+                     {{1e6, 1e6}, {1e6, 1e6}});
+    EXPECT_THROW(NonlocalBedSystem(c.particles, two_materials, c.die, o),
+                 std::invalid_argument);
   }
 
   TEST(NonlocalBedSystem, JacobianIsCentralDifferenceOfResidual)

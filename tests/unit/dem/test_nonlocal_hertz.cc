@@ -5,6 +5,7 @@
 #include "dem/contact/hertz.h"
 #include "dem/contact/nonlocal_hertz.h"
 #include "dem/contact/pair_properties.h"
+#include "dem/nonlocal/nonlocal_contact_network.h"
 #include "dem/numbers.h"
 #include "elastic_sphere.h"
 
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <numeric>
 #include <random>
 #include <vector>
@@ -34,6 +36,14 @@ namespace
       = 0.75 * ((1 - m1.nu * m1.nu) / m1.E + (1 - m2.nu * m2.nu) / m2.E)
         * std::sqrt(1 / m1.R + 1 / m2.R);
     return 1.0 / inverse;
+  }
+
+  // The network's local law with Hertz coefficient n_H [N/m^{3/2}]:
+  // n_H = 4/3 E sqrt(R) with R = 1 m, E = 3/4 n_H.
+  ParticleLaw
+  hertz_law(const double n_H)
+  {
+    return HertzLaw(1.0, 0.75 * n_H);
   }
 
   // Eq. (5), written out here.
@@ -300,18 +310,20 @@ namespace
     std::vector<NonlocalBody> bodies(N, NonlocalBody{R, E, nu});
     bodies.push_back({rigid, rigid, 0.0});
     bodies.push_back({rigid, rigid, 0.0});
-    const double n_wall = hertz_coefficient({R, E, nu}, rigid_flat);
-    const double n_s    = hertz_coefficient({R, E, nu}, {R, E, nu});
+    const ParticleLaw wall
+      = hertz_law(hertz_coefficient({R, E, nu}, rigid_flat));
+    const ParticleLaw pair
+      = hertz_law(hertz_coefficient({R, E, nu}, {R, E, nu}));
     std::vector<NonlocalContactNetwork::Contact> contacts;
     std::vector<double>                          gamma;
-    contacts.push_back({0, N, Eigen::Vector3d(-1, 0, 0), n_wall});
+    contacts.push_back({0, N, Eigen::Vector3d(-1, 0, 0), &wall});
     gamma.push_back(chain.wall_overlap);
     for (unsigned int i = 0; i + 1 < N; ++i)
       {
-        contacts.push_back({i, i + 1, Eigen::Vector3d(1, 0, 0), n_s});
+        contacts.push_back({i, i + 1, Eigen::Vector3d(1, 0, 0), &pair});
         gamma.push_back(chain.sphere_overlap);
       }
-    contacts.push_back({N - 1, N + 1, Eigen::Vector3d(1, 0, 0), n_wall});
+    contacts.push_back({N - 1, N + 1, Eigen::Vector3d(1, 0, 0), &wall});
     gamma.push_back(chain.wall_overlap);
 
     NonlocalContactNetwork network;
@@ -338,6 +350,22 @@ namespace
     std::vector<Eigen::Vector3d>                 x;
     std::vector<NonlocalContactNetwork::Contact> contacts;
     std::vector<double>                          gamma;
+    // Hertz coefficient of each contact (Eq. 9) and the laws the contacts
+    // point to (a deque: appending moves no law).
+    std::vector<double>     n_H;
+    std::deque<ParticleLaw> laws;
+
+    void
+    add(std::size_t            i,
+        std::size_t            j,
+        const Eigen::Vector3d &n,
+        double                 g,
+        double                 coefficient)
+    {
+      contacts.push_back({i, j, n, &laws.emplace_back(hertz_law(coefficient))});
+      gamma.push_back(g);
+      n_H.push_back(coefficient);
+    }
   };
 
   Cluster
@@ -371,9 +399,7 @@ namespace
               const ElasticSphere mj{R,
                                      k.bodies[j].youngs_modulus,
                                      k.bodies[j].poisson_ratio};
-              k.contacts.push_back(
-                {i, j, d.normalized(), hertz_coefficient(mi, mj)});
-              k.gamma.push_back(g);
+              k.add(i, j, d.normalized(), g, hertz_coefficient(mi, mj));
             }
         }
     // Plates below the first row and above the last one.
@@ -388,19 +414,19 @@ namespace
                                k.bodies[i].poisson_ratio};
         if (k.x[i].y() - R < bottom)
           {
-            k.contacts.push_back({i,
-                                  n,
-                                  Eigen::Vector3d(0, -1, 0),
-                                  hertz_coefficient(mi, rigid_flat)});
-            k.gamma.push_back(bottom - (k.x[i].y() - R));
+            k.add(i,
+                  n,
+                  Eigen::Vector3d(0, -1, 0),
+                  bottom - (k.x[i].y() - R),
+                  hertz_coefficient(mi, rigid_flat));
           }
         if (k.x[i].y() + R > top)
           {
-            k.contacts.push_back({i,
-                                  n + 1,
-                                  Eigen::Vector3d(0, 1, 0),
-                                  hertz_coefficient(mi, rigid_flat)});
-            k.gamma.push_back(k.x[i].y() + R - top);
+            k.add(i,
+                  n + 1,
+                  Eigen::Vector3d(0, 1, 0),
+                  k.x[i].y() + R - top,
+                  hertz_coefficient(mi, rigid_flat));
           }
       }
     return k;
@@ -449,7 +475,7 @@ namespace
           }
         EXPECT_NEAR(gamma_nl[c], g_nl, 1e-12 * k.gamma[c]);
         EXPECT_NEAR(force[c],
-                    cc.n_H * std::pow(std::max(k.gamma[c] + g_nl, 0.0), 1.5),
+                    k.n_H[c] * std::pow(std::max(k.gamma[c] + g_nl, 0.0), 1.5),
                     1e-10 * force[c] + 1e-30);
         largest_shift = std::max(largest_shift, std::abs(g_nl) / k.gamma[c]);
       }
@@ -504,7 +530,7 @@ namespace
     streamed.reserve(k.contacts.size(), network.n_incidences());
     for (std::size_t c = 0; c < k.contacts.size(); ++c)
       {
-        streamed.add_contact(k.contacts[c].n_H);
+        streamed.add_contact(*k.contacts[c].law);
         for (std::size_t q = network.offset()[c]; q < network.offset()[c + 1];
              ++q)
           streamed.add_influence(network.other()[q], network.compliance()[q]);
@@ -524,10 +550,11 @@ TEST(NonlocalFixedPoint, DivergenceBeyondTheLimitPointIsNotConvergence)
   // Two contacts that load each other (one particle between them): with
   // w n_H large and a large overlap the fixed point of Eq. (10) has no
   // solution and the iteration runs off to infinity; it must say so.
+  const ParticleLaw      unit = hertz_law(1.0);
   NonlocalContactNetwork network;
-  network.add_contact(1.0);
+  network.add_contact(unit);
   network.add_influence(1, 1.0);
-  network.add_contact(1.0);
+  network.add_contact(unit);
   network.add_influence(0, 1.0);
   std::vector<double> gamma{1.0, 1.0}, gamma_nl, force;
   const auto          result
