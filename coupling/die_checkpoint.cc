@@ -180,11 +180,12 @@ namespace compax::coupling
     archive.write_attribute("jamming_density", progress.jamming_density);
     archive.write_attribute("relative_density", bed.relative_density());
     archive.write_attribute("newton_iterations",
-                            double(progress.newton_iterations));
-    archive.write_attribute("cg_iterations", double(progress.cg_iterations));
-    archive.write_attribute("assemblies", double(progress.assemblies));
+                            double(progress.work.iterations));
+    archive.write_attribute("cg_iterations",
+                            double(progress.work.cg_iterations));
+    archive.write_attribute("assemblies", double(progress.work.assemblies));
     archive.write_attribute("fire_iterations",
-                            double(progress.fire_iterations));
+                            double(progress.work.fire_iterations));
     archive.write_attribute("rows", double(progress.rows.size()));
     archive.write_attribute("branches", double(progress.branches.size()));
     save_bed(archive, "bed", bed);
@@ -227,17 +228,17 @@ namespace compax::coupling
                                  + "' is not a count (damaged)");
       return v;
     };
-    p.completed_targets = static_cast<std::size_t>(count("completed_targets"));
-    p.branches_run      = static_cast<int>(count("branches_run"));
-    p.jamming_density   = archive.read_attribute("jamming_density");
-    p.newton_iterations = static_cast<long>(count("newton_iterations"));
-    p.cg_iterations     = static_cast<long>(count("cg_iterations"));
-    p.assemblies        = static_cast<long>(count("assemblies"));
-    p.fire_iterations   = static_cast<long>(count("fire_iterations"));
-    const auto n_rows   = static_cast<std::size_t>(count("rows"));
-    const auto n_branches = static_cast<std::size_t>(count("branches"));
-    checkpoint.bed        = load_bed(archive, "bed", model);
-    p.compaction_targets  = archive.read_array("compaction_targets");
+    p.completed_targets  = static_cast<std::size_t>(count("completed_targets"));
+    p.branches_run       = static_cast<int>(count("branches_run"));
+    p.jamming_density    = archive.read_attribute("jamming_density");
+    p.work.iterations    = static_cast<long>(count("newton_iterations"));
+    p.work.cg_iterations = static_cast<long>(count("cg_iterations"));
+    p.work.assemblies    = static_cast<long>(count("assemblies"));
+    p.work.fire_iterations = static_cast<long>(count("fire_iterations"));
+    const auto n_rows      = static_cast<std::size_t>(count("rows"));
+    const auto n_branches  = static_cast<std::size_t>(count("branches"));
+    checkpoint.bed         = load_bed(archive, "bed", model);
+    p.compaction_targets   = archive.read_array("compaction_targets");
 
     const std::size_t n_fields = count_fields();
     const auto        values   = archive.read_array("rows");

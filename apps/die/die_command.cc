@@ -148,12 +148,12 @@ namespace compax::cli
 
     /// The solver's work and the run's wall time since @p started.
     void
-    report_solver(const dem::DieSolverTotals                 &t,
+    report_solver(const dem::SolverWork                      &t,
                   const std::chrono::steady_clock::time_point started)
     {
       const double seconds = dem::seconds_since(started);
       std::cout << std::defaultfloat << std::setprecision(4)
-                << "Solver: " << t.newton_iterations << " Newton iterations ("
+                << "Solver: " << t.iterations << " Newton iterations ("
                 << t.cg_iterations << " CG), " << t.fire_iterations
                 << " relaxation iterations (FIRE or L-BFGS), ";
       // The elastic (Hertz or nonlocal) stepper does not time its

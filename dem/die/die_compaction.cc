@@ -222,13 +222,7 @@ namespace compax::dem
   void
   DieCompaction::check(const LoadStepResult &r, const std::string &what)
   {
-    assembly_seconds += r.assembly_seconds;
-    linear_seconds += r.linear_seconds;
-    assemblies += r.assemblies;
-    newton_iterations += r.iterations;
-    cg_iterations += r.cg_iterations;
-    fire_iterations += r.fire_iterations;
-    fire_seconds += r.fire_seconds;
+    work.add(r);
 
     if (!r.converged)
       {
@@ -409,10 +403,7 @@ namespace compax::dem
     p.jamming_density    = rho_jammed;
     p.rows               = rows;
     p.branches           = summaries;
-    p.newton_iterations  = newton_iterations;
-    p.cg_iterations      = cg_iterations;
-    p.assemblies         = assemblies;
-    p.fire_iterations    = fire_iterations;
+    p.work               = work;
     return p;
   }
 
@@ -450,17 +441,14 @@ namespace compax::dem
     if (!mismatch.empty())
       throw std::invalid_argument("die protocol: " + mismatch);
     failure_message.clear();
-    rows              = from.rows;
-    summaries         = from.branches;
-    completed         = from.completed_targets;
-    n_branches        = from.branches_run;
-    rho_jammed        = from.jamming_density;
-    newton_iterations = from.newton_iterations;
-    cg_iterations     = from.cg_iterations;
-    assemblies        = from.assemblies;
-    fire_iterations   = from.fire_iterations;
-    last_good         = path;
-    start_time        = now() - (rows.empty() ? 0.0 : rows.back().wall_seconds);
+    rows       = from.rows;
+    summaries  = from.branches;
+    completed  = from.completed_targets;
+    n_branches = from.branches_run;
+    rho_jammed = from.jamming_density;
+    work       = from.work;
+    last_good  = path;
+    start_time = now() - (rows.empty() ? 0.0 : rows.back().wall_seconds);
     if (csv)
       {
         write_csv_header(*csv);
@@ -506,7 +494,7 @@ namespace compax::dem
           : c.run(path, model, targets.back());
     consolidation_seconds += r.seconds;
     consolidation_iterations += r.iterations;
-    assemblies += r.assemblies;
+    work.assemblies += r.assemblies;
     rho_jammed = r.jammed ? path.relative_density() : 0.0;
     if (progress)
       *progress << "consolidation: " << (r.jammed ? "jammed" : "not jammed")

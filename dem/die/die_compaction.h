@@ -5,6 +5,7 @@
 #include "dem/nonlocal/elastic_die_stepper.h"
 #include "dem/solver/consolidation.h"
 #include "dem/solver/load_stepper.h"
+#include "dem/solver/solver_work.h"
 
 #include <functional>
 #include <iosfwd>
@@ -192,9 +193,9 @@ namespace compax::dem
     double                     jamming_density = 0.0;
     std::vector<DieRecord>     rows;
     std::vector<BranchSummary> branches;
-    /// Solver totals so far (performance reports).
-    long newton_iterations = 0, cg_iterations = 0, assemblies = 0,
-         fire_iterations = 0;
+    /// Solver work so far (performance reports; a checkpoint keeps the
+    /// counts, not the times).
+    SolverWork work;
   };
 
   /**
@@ -368,10 +369,7 @@ namespace compax::dem
     write_csv_row(std::ostream &out, const DieRecord &r);
 
     /// Totals for performance reports.
-    double assembly_seconds = 0.0, linear_seconds = 0.0;
-    double fire_seconds = 0.0;
-    long   assemblies = 0, newton_iterations = 0, cg_iterations = 0,
-         fire_iterations = 0;
+    SolverWork work;
     /// Consolidation: wall time and relaxation iterations.
     double consolidation_seconds    = 0.0;
     long   consolidation_iterations = 0;

@@ -61,19 +61,6 @@ namespace compax::dem
       progress << std::endl;
     }
 
-    DieSolverTotals
-    solver_totals(const DieCompaction &die)
-    {
-      DieSolverTotals t;
-      t.newton_iterations = die.newton_iterations;
-      t.cg_iterations     = die.cg_iterations;
-      t.fire_iterations   = die.fire_iterations;
-      t.assemblies        = die.assemblies;
-      t.assembly_seconds  = die.assembly_seconds;
-      t.linear_seconds    = die.linear_seconds;
-      t.fire_seconds      = die.fire_seconds;
-      return t;
-    }
   } // namespace
 
   DieTargetError::DieTargetError(const double final_density,
@@ -220,7 +207,7 @@ namespace compax::dem
     result.pressure_resolution = die.pressure_resolution();
     result.jamming_density     = die.jamming_density();
     result.stopped             = die.stopped();
-    result.solver              = solver_totals(die);
+    result.solver              = die.work;
     result.fits
       = fit_die_study(result.rows, result.branches, result.pressure_resolution);
     return result;

@@ -94,15 +94,6 @@ namespace compax::dem
     std::function<void(const Bed &bed, const DieProgress &progress)> checkpoint;
   };
 
-  /// Solver work of a run (performance reports).
-  struct DieSolverTotals
-  {
-    long newton_iterations = 0, cg_iterations = 0, fire_iterations = 0,
-         assemblies = 0;
-    /// Bonded law only: the elastic steppers do not time their work [s].
-    double assembly_seconds = 0.0, linear_seconds = 0.0, fire_seconds = 0.0;
-  };
-
   /// What a die study computed.
   struct DieStudyResult
   {
@@ -126,8 +117,9 @@ namespace compax::dem
     std::string        failure;
     std::optional<Bed> last_converged;
     /// Stopped after protocol.stop_after compaction targets.
-    bool            stopped = false;
-    DieSolverTotals solver;
+    bool stopped = false;
+    /// The run's solver work (performance reports).
+    SolverWork solver;
   };
 
   /**
