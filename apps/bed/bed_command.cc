@@ -164,49 +164,39 @@ namespace compax::cli
     class BedCommand : public Command
     {
     public:
-      std::string
-      name() const override
+      BedCommand()
+          : Command(
+            {"bed",
+             "disordered two-material bed in a square die, Hertz against "
+             "nonlocal contact (Gonzalez & Cuitino 2012, Sec. 4.2)",
+             "Deposits a bed of elastic frictionless spheres of two "
+             "materials (log-normal radii with cut-offs) ballistically "
+             "into a die of square cross-section, then consolidates and "
+             "compacts it by the upper punch under displacement control, "
+             "once with Hertz contacts and once with the nonlocal contact "
+             "formulation (Eqs. 5, 9, 10, Algorithm 1 at every residual "
+             "evaluation). Below the jamming pressure the bed is relaxed "
+             "by FIRE (rearrangement; with Hertz contacts also for the "
+             "nonlocal run unless Hertz consolidation = false); above it "
+             "every step is a static equilibrium solved by Newton: by "
+             "default a trust region on the frozen-angle Hessian of the "
+             "nonlocal formulation, finished by Newton-Krylov with the "
+             "exact Jacobian (Solver).\n\nWrites bed.csv (per "
+             "formulation and step: relative density, punch gap, forces "
+             "on the six walls, mean lateral reaction, solver "
+             "iterations, Algorithm 1 sweeps, coordination, largest "
+             "gamma_NL / gamma), discrepancy.csv (load and lateral "
+             "reaction of both formulations at the same densities and "
+             "their relative difference), particles.csv (the deposited "
+             "bed), bed_load.png (like Fig. 19, left).\n\nWith Benchmark/"
+             "Particles > 0 it instead deposits that many particles in a "
+             "wider die, compresses them affinely, and times one Hertz "
+             "and one nonlocal residual (benchmark.csv).\n\nBuilt-in "
+             "default: Sec. 4.2, 125 particles, E1 = 19 GPa, nu1 = 0.30, "
+             "radii 75-80 um; E2 = 7 GPa, nu2 = 0.20, radii 125-167 um; "
+             "equal solid volumes of both; 1 mm x 1 mm die; from "
+             "relative density 0.42 to 0.80."})
       {
-        return "bed";
-      }
-
-      std::string
-      summary() const override
-      {
-        return "disordered two-material bed in a square die, Hertz against "
-               "nonlocal contact (Gonzalez & Cuitino 2012, Sec. 4.2)";
-      }
-
-      std::string
-      description() const override
-      {
-        return "Deposits a bed of elastic frictionless spheres of two "
-               "materials (log-normal radii with cut-offs) ballistically "
-               "into a die of square cross-section, then consolidates and "
-               "compacts it by the upper punch under displacement control, "
-               "once with Hertz contacts and once with the nonlocal contact "
-               "formulation (Eqs. 5, 9, 10, Algorithm 1 at every residual "
-               "evaluation). Below the jamming pressure the bed is relaxed "
-               "by FIRE (rearrangement; with Hertz contacts also for the "
-               "nonlocal run unless Hertz consolidation = false); above it "
-               "every step is a static equilibrium solved by Newton: by "
-               "default a trust region on the frozen-angle Hessian of the "
-               "nonlocal formulation, finished by Newton-Krylov with the "
-               "exact Jacobian (Solver).\n\nWrites bed.csv (per "
-               "formulation and step: relative density, punch gap, forces "
-               "on the six walls, mean lateral reaction, solver "
-               "iterations, Algorithm 1 sweeps, coordination, largest "
-               "gamma_NL / gamma), discrepancy.csv (load and lateral "
-               "reaction of both formulations at the same densities and "
-               "their relative difference), particles.csv (the deposited "
-               "bed), bed_load.png (like Fig. 19, left).\n\nWith Benchmark/"
-               "Particles > 0 it instead deposits that many particles in a "
-               "wider die, compresses them affinely, and times one Hertz "
-               "and one nonlocal residual (benchmark.csv).\n\nBuilt-in "
-               "default: Sec. 4.2, 125 particles, E1 = 19 GPa, nu1 = 0.30, "
-               "radii 75-80 um; E2 = 7 GPa, nu2 = 0.20, radii 125-167 um; "
-               "equal solid volumes of both; 1 mm x 1 mm die; from "
-               "relative density 0.42 to 0.80.";
       }
 
       void

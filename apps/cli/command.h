@@ -4,32 +4,61 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 
 namespace compax::cli
 {
+  /// What `compax --help` and `compax <name> --help` say about a command.
+  struct CommandInfo
+  {
+    /// The word typed after `compax`.
+    std::string name;
+
+    /// One line for `compax --help`.
+    std::string summary;
+
+    /// A paragraph for `compax <name> --help`: what the command computes,
+    /// what it writes, and its built-in default case.
+    std::string description;
+  };
+
   /**
    * One subcommand of `compax` (contact, die, ...). A command declares its
    * documented parameters, may check relations between them, and runs on a
    * parsed ParameterHandler, writing into an output folder that the caller
-   * created and publishes only if run() returns normally.
+   * created and publishes only if run() returns normally. Its name and help
+   * texts are data, given once to the constructor.
    */
   class Command
   {
   public:
+    explicit Command(CommandInfo info)
+        : info(std::move(info))
+    {
+    }
+
     virtual ~Command() = default;
 
     /// The word typed after `compax`.
-    virtual std::string
-    name() const = 0;
+    const std::string &
+    name() const
+    {
+      return info.name;
+    }
 
     /// One line for `compax --help`.
-    virtual std::string
-    summary() const = 0;
+    const std::string &
+    summary() const
+    {
+      return info.summary;
+    }
 
-    /// A paragraph for `compax <name> --help`: what the command computes,
-    /// what it writes, and its built-in default case.
-    virtual std::string
-    description() const = 0;
+    /// The paragraph for `compax <name> --help`.
+    const std::string &
+    description() const
+    {
+      return info.description;
+    }
 
     /// Declares every parameter with default, range pattern and
     /// documentation naming its unit.
@@ -50,5 +79,8 @@ namespace compax::cli
     virtual int
     run(dealii::ParameterHandler    &prm,
         const std::filesystem::path &output_directory) const = 0;
+
+  private:
+    CommandInfo info;
   };
 } // namespace compax::cli

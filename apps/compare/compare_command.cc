@@ -83,73 +83,63 @@ namespace compax::cli
     class CompareCommand : public Command
     {
     public:
-      std::string
-      name() const override
+      CompareCommand()
+          : Command(
+            {"compare",
+             "particle die vs RVE moduli vs multiscale tablet (database, "
+             "FE2)",
+             "Runs, for one die and one particle material, the direct "
+             "particle simulation (compax die, in die/), the multiscale "
+             "tablet on the RVE response database (compax tablet with "
+             "Material/Model = multiscale-database, in tablet-database/, "
+             "its database in tablet-database/database/) and, with "
+             "Compare/FE2, the FE2 tablet (multiscale-fe2, in "
+             "tablet-fe2/). The tablet is filled with the deposited "
+             "particle bed: same die diameter, fill height and initial "
+             "relative density, compacted to the same final density, "
+             "frictionless walls as in the particle simulation; the RVEs "
+             "start from that density and are made of the same Material "
+             "and Bonding; the database branches at the die's unloading "
+             "points.\n\nWrites compare.csv (columns comparison, "
+             "relative_density, reference, value, relative_difference = "
+             "(value - reference)/|reference|; the compared study is "
+             "interpolated linearly in relative density at the reference's "
+             "samples, missing values are empty): youngs_modulus and "
+             "poisson_ratio (reference: the tablet's E and nu from the "
+             "particle die's unloading curve, Gonzalez 2018 Sec. 5.7; "
+             "value: the homogenized moduli of the RVE unloaded from the "
+             "same in-die density rho_max), punch_pressure (upper punch "
+             "pressure against in-die relative density during compaction; "
+             "reference the particle die, value the database-mode tablet, "
+             "whose density is the rigid die's, rho_0 H_0 / H from the "
+             "punch gap, as in the particle die), "
+             "ejection_pressure (mu times the residual die-wall force "
+             "after unloading from the final density over the punch area, "
+             "Sec. 5.4, for both), fe2_vs_database (punch pressure of the "
+             "FE2 tablet against the database-mode tablet), "
+             "interior_sigma_zz and interior_lateral_ratio (the die's "
+             "interior, the region farther than two diameters from "
+             "every wall with each sphere counted by its volume inside, "
+             "against the RVE's uniaxial compaction path at "
+             "the interior's own solid fraction: axial stress, and "
+             "sigma_rr/sigma_zz against the RVE's lateral "
+             "(sigma_xx+sigma_yy)/2 over sigma_zz); those rows also go "
+             "to interior.csv (relative_density_die, "
+             "relative_density_interior, sigma_zz_interior, "
+             "sigma_rr_interior, sigma_zz_rve, sigma_xx_rve; stresses in "
+             "Pa, tension positive; the RVE's empty outside the density "
+             "range of its compaction path). Also "
+             "compare.md (setup, per-study status and time, mean and "
+             "largest relative differences), compare.png with "
+             "compare.gp, and each study's own output and "
+             "parameters.prm.\n\nBuilt-in default: Material 1 of "
+             "Gonzalez 2018, 400 particles in a 4 mm die to 0.87 with "
+             "unloading at 0.75, 0.79, 0.83, 0.87; 200-particle RVE "
+             "database; FE2 with 60-particle RVEs on one radial cell "
+             "(experimental: it may stop near the jamming transition, "
+             "which compare.md then reports); about 1.5 min, most of it "
+             "FE2 (Compare/FE2 = false: about 15 s)."})
       {
-        return "compare";
-      }
-
-      std::string
-      summary() const override
-      {
-        return "particle die vs RVE moduli vs multiscale tablet (database, "
-               "FE2)";
-      }
-
-      std::string
-      description() const override
-      {
-        return "Runs, for one die and one particle material, the direct "
-               "particle simulation (compax die, in die/), the multiscale "
-               "tablet on the RVE response database (compax tablet with "
-               "Material/Model = multiscale-database, in tablet-database/, "
-               "its database in tablet-database/database/) and, with "
-               "Compare/FE2, the FE2 tablet (multiscale-fe2, in "
-               "tablet-fe2/). The tablet is filled with the deposited "
-               "particle bed: same die diameter, fill height and initial "
-               "relative density, compacted to the same final density, "
-               "frictionless walls as in the particle simulation; the RVEs "
-               "start from that density and are made of the same Material "
-               "and Bonding; the database branches at the die's unloading "
-               "points.\n\nWrites compare.csv (columns comparison, "
-               "relative_density, reference, value, relative_difference = "
-               "(value - reference)/|reference|; the compared study is "
-               "interpolated linearly in relative density at the reference's "
-               "samples, missing values are empty): youngs_modulus and "
-               "poisson_ratio (reference: the tablet's E and nu from the "
-               "particle die's unloading curve, Gonzalez 2018 Sec. 5.7; "
-               "value: the homogenized moduli of the RVE unloaded from the "
-               "same in-die density rho_max), punch_pressure (upper punch "
-               "pressure against in-die relative density during compaction; "
-               "reference the particle die, value the database-mode tablet, "
-               "whose density is the rigid die's, rho_0 H_0 / H from the "
-               "punch gap, as in the particle die), "
-               "ejection_pressure (mu times the residual die-wall force "
-               "after unloading from the final density over the punch area, "
-               "Sec. 5.4, for both), fe2_vs_database (punch pressure of the "
-               "FE2 tablet against the database-mode tablet), "
-               "interior_sigma_zz and interior_lateral_ratio (the die's "
-               "interior, the region farther than two diameters from "
-               "every wall with each sphere counted by its volume inside, "
-               "against the RVE's uniaxial compaction path at "
-               "the interior's own solid fraction: axial stress, and "
-               "sigma_rr/sigma_zz against the RVE's lateral "
-               "(sigma_xx+sigma_yy)/2 over sigma_zz); those rows also go "
-               "to interior.csv (relative_density_die, "
-               "relative_density_interior, sigma_zz_interior, "
-               "sigma_rr_interior, sigma_zz_rve, sigma_xx_rve; stresses in "
-               "Pa, tension positive; the RVE's empty outside the density "
-               "range of its compaction path). Also "
-               "compare.md (setup, per-study status and time, mean and "
-               "largest relative differences), compare.png with "
-               "compare.gp, and each study's own output and "
-               "parameters.prm.\n\nBuilt-in default: Material 1 of "
-               "Gonzalez 2018, 400 particles in a 4 mm die to 0.87 with "
-               "unloading at 0.75, 0.79, 0.83, 0.87; 200-particle RVE "
-               "database; FE2 with 60-particle RVEs on one radial cell "
-               "(experimental: it may stop near the jamming transition, "
-               "which compare.md then reports); about 1.5 min, most of it "
-               "FE2 (Compare/FE2 = false: about 15 s).";
       }
 
       void

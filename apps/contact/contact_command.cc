@@ -39,39 +39,29 @@ namespace compax::cli
     class ContactCommand : public Command
     {
     public:
-      std::string
-      name() const override
+      ContactCommand()
+          : Command(
+            {"contact",
+             "one contact pair along a prescribed overlap history",
+             "Evaluates one contact law (hertz, bonded-elastoplastic, "
+             "...) for a sphere-sphere or sphere-wall pair along a "
+             "piecewise-linear history of the overlap gamma (load, "
+             "unload, reload, unload past breakage, any number of "
+             "segments), updating the internal variables after every "
+             "step as a converged state.\n\nWrites contact.csv "
+             "(step,gamma,force,contact_radius, the law's internal "
+             "variables (a_p,a_B of the bonded law, delta_max of the "
+             "hysteretic ones), stiffness; SI units), contact.png (force "
+             "and contact radius against gamma, like Gonzalez 2018 Figs. 4 "
+             "and 7) with its gnuplot "
+             "script, and prints the peak compressive force, the pull-off "
+             "force with its gamma and contact radius, and the gamma at "
+             "which the bond breaks.\n\nBuilt-in default: the Du et al. "
+             "case of Gonzalez 2018 Sec. 3.3, a sphere of R = 1.3 um on a "
+             "rigid flat (E = 233 GPa, nu = 0.3, kappa = 12.1 GPa, m = "
+             "1.79, K_Ic = 0.48 MPa m^1/2, xi_B = 0.01) loaded to "
+             "gamma_max = 28.2 nm, then unloaded past breakage."})
       {
-        return "contact";
-      }
-
-      std::string
-      summary() const override
-      {
-        return "one contact pair along a prescribed overlap history";
-      }
-
-      std::string
-      description() const override
-      {
-        return "Evaluates one contact law (hertz, bonded-elastoplastic, "
-               "...) for a sphere-sphere or sphere-wall pair along a "
-               "piecewise-linear history of the overlap gamma (load, "
-               "unload, reload, unload past breakage, any number of "
-               "segments), updating the internal variables after every "
-               "step as a converged state.\n\nWrites contact.csv "
-               "(step,gamma,force,contact_radius, the law's internal "
-               "variables (a_p,a_B of the bonded law, delta_max of the "
-               "hysteretic ones), stiffness; SI units), contact.png (force "
-               "and contact radius against gamma, like Gonzalez 2018 Figs. 4 "
-               "and 7) with its gnuplot "
-               "script, and prints the peak compressive force, the pull-off "
-               "force with its gamma and contact radius, and the gamma at "
-               "which the bond breaks.\n\nBuilt-in default: the Du et al. "
-               "case of Gonzalez 2018 Sec. 3.3, a sphere of R = 1.3 um on a "
-               "rigid flat (E = 233 GPa, nu = 0.3, kappa = 12.1 GPa, m = "
-               "1.79, K_Ic = 0.48 MPa m^1/2, xi_B = 0.01) loaded to "
-               "gamma_max = 28.2 nm, then unloaded past breakage.";
       }
 
       void

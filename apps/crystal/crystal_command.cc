@@ -144,48 +144,38 @@ namespace compax::cli
     class CrystalCommand : public Command
     {
     public:
-      std::string
-      name() const override
+      CrystalCommand()
+          : Command(
+            {"crystal",
+             "granular crystals under Hertz and nonlocal contact "
+             "(Gonzalez & Cuitino 2012)",
+             "Compresses the granular crystals of Gonzalez & Cuitino "
+             "2012, Sec. 4.1, under displacement control along z, with "
+             "Hertz theory and with the nonlocal contact formulation "
+             "(Eqs. 5, 9, 10, Algorithm 1): chain-1d (equivalent to a "
+             "chain between rigid plates), square-2d and cubic-3d "
+             "(periodic orthogonal to the load), square-2d-rotated (by "
+             "pi/4), hexagonal-2d (close-packed), square-2d-preloaded "
+             "(confined by eps0 in both directions first), "
+             "bcc-hydrostatic and bcc-die. Every crystal is a Bravais "
+             "lattice, so the affine deformation is in equilibrium and "
+             "only the contacts of one particle are solved. The "
+             "nonlocal formulation has a limit point beyond which it "
+             "has no solution; its curves end there.\n\nWrites per "
+             "configuration <name>.csv (nu, strain, relative_density, "
+             "then for hertz_ and nonlocal_: load, lateral_x, "
+             "lateral_y, coordination; and the discrepancy D of Eq. 16; "
+             "loads are forces [N] on the faces of the deformed "
+             "conventional cell, lateral reactions on the faces normal "
+             "to x and y), <name>_load.png and <name>_discrepancy.png "
+             "(like Figs. 10-17), contacts.csv (relative densities at "
+             "which second and third contacts form, empty where none "
+             "forms) and limits.csv (where the nonlocal formulation "
+             "ends).\n\nBuilt-in default: the BCC crystal under "
+             "hydrostatic and die compaction up to relative density "
+             "1.1, rubber spheres of Sec. 3 (R = 0.01 m, E = 1.85 MPa, "
+             "nu = 0.46) and nu = 0.45."})
       {
-        return "crystal";
-      }
-
-      std::string
-      summary() const override
-      {
-        return "granular crystals under Hertz and nonlocal contact "
-               "(Gonzalez & Cuitino 2012)";
-      }
-
-      std::string
-      description() const override
-      {
-        return "Compresses the granular crystals of Gonzalez & Cuitino "
-               "2012, Sec. 4.1, under displacement control along z, with "
-               "Hertz theory and with the nonlocal contact formulation "
-               "(Eqs. 5, 9, 10, Algorithm 1): chain-1d (equivalent to a "
-               "chain between rigid plates), square-2d and cubic-3d "
-               "(periodic orthogonal to the load), square-2d-rotated (by "
-               "pi/4), hexagonal-2d (close-packed), square-2d-preloaded "
-               "(confined by eps0 in both directions first), "
-               "bcc-hydrostatic and bcc-die. Every crystal is a Bravais "
-               "lattice, so the affine deformation is in equilibrium and "
-               "only the contacts of one particle are solved. The "
-               "nonlocal formulation has a limit point beyond which it "
-               "has no solution; its curves end there.\n\nWrites per "
-               "configuration <name>.csv (nu, strain, relative_density, "
-               "then for hertz_ and nonlocal_: load, lateral_x, "
-               "lateral_y, coordination; and the discrepancy D of Eq. 16; "
-               "loads are forces [N] on the faces of the deformed "
-               "conventional cell, lateral reactions on the faces normal "
-               "to x and y), <name>_load.png and <name>_discrepancy.png "
-               "(like Figs. 10-17), contacts.csv (relative densities at "
-               "which second and third contacts form, empty where none "
-               "forms) and limits.csv (where the nonlocal formulation "
-               "ends).\n\nBuilt-in default: the BCC crystal under "
-               "hydrostatic and die compaction up to relative density "
-               "1.1, rubber spheres of Sec. 3 (R = 0.01 m, E = 1.85 MPa, "
-               "nu = 0.46) and nu = 0.45.";
       }
 
       void

@@ -82,47 +82,37 @@ namespace compax::cli
     class DatabaseCommand : public Command
     {
     public:
-      std::string
-      name() const override
+      DatabaseCommand()
+          : Command(
+            {"database",
+             "RVE response database and the Drucker-Prager Cap fitted "
+             "to it",
+             "Runs one periodic RVE of bonded elasto-plastic spheres "
+             "along the paths a continuum law needs: uniaxial-strain "
+             "(die-like) compaction to the final density; at each branch "
+             "density, axial unloading until the cell carries no axial "
+             "stress, the elastic moduli of the unloaded cell (condensed "
+             "tangent, isotropic projection), two constant-volume "
+             "shear probes (from the unloaded cell, and after a small "
+             "volumetric compression) whose plateaus give the shear "
+             "failure line, and radial-strain probes from the loaded "
+             "state (eps_rr / eps_zz between isochoric and hydrostatic). "
+             "Fits a density-dependent Drucker-Prager Cap: "
+             "shear line through the two failures, cap through the "
+             "compaction state with the uniaxial flow normal. Then drives "
+             "the fitted law along every path (training paths, the "
+             "held-out radial probes, and all paths of a second, held-out "
+             "packing) and writes its relative stress error per path to "
+             "validation.csv, with the RVE's own packing-to-packing "
+             "scatter. Writes database.csv and database.h5 (every "
+             "equilibrated state with strain, stress, p, q), "
+             "branches.csv, dpc_table.csv (the format `compax tablet` "
+             "reads as its DPC table) and dpc_table.png; prints progress "
+             "per path; checkpoints/database.h5 after every branch "
+             "(Checkpoints/Resume from continues an interrupted run). "
+             "Default: 200 particles of Material 1 (Gonzalez 2018), "
+             "branches at 0.70, 0.75, 0.80, 0.85."})
       {
-        return "database";
-      }
-
-      std::string
-      summary() const override
-      {
-        return "RVE response database and the Drucker-Prager Cap fitted "
-               "to it";
-      }
-
-      std::string
-      description() const override
-      {
-        return "Runs one periodic RVE of bonded elasto-plastic spheres "
-               "along the paths a continuum law needs: uniaxial-strain "
-               "(die-like) compaction to the final density; at each branch "
-               "density, axial unloading until the cell carries no axial "
-               "stress, the elastic moduli of the unloaded cell (condensed "
-               "tangent, isotropic projection), two constant-volume "
-               "shear probes (from the unloaded cell, and after a small "
-               "volumetric compression) whose plateaus give the shear "
-               "failure line, and radial-strain probes from the loaded "
-               "state (eps_rr / eps_zz between isochoric and hydrostatic). "
-               "Fits a density-dependent Drucker-Prager Cap: "
-               "shear line through the two failures, cap through the "
-               "compaction state with the uniaxial flow normal. Then drives "
-               "the fitted law along every path (training paths, the "
-               "held-out radial probes, and all paths of a second, held-out "
-               "packing) and writes its relative stress error per path to "
-               "validation.csv, with the RVE's own packing-to-packing "
-               "scatter. Writes database.csv and database.h5 (every "
-               "equilibrated state with strain, stress, p, q), "
-               "branches.csv, dpc_table.csv (the format `compax tablet` "
-               "reads as its DPC table) and dpc_table.png; prints progress "
-               "per path; checkpoints/database.h5 after every branch "
-               "(Checkpoints/Resume from continues an interrupted run). "
-               "Default: 200 particles of Material 1 (Gonzalez 2018), "
-               "branches at 0.70, 0.75, 0.80, 0.85.";
       }
 
       void

@@ -168,66 +168,56 @@ namespace compax::cli
     class DieCommand : public Command
     {
     public:
-      std::string
-      name() const override
+      DieCommand()
+          : Command(
+            {"die",
+             "die compaction, unloading and ejection of a particle bed",
+             "Fills a rigid cylindrical die with bonded elasto-plastic "
+             "spheres by ballistic deposition, compacts the bed by the "
+             "upper punch through a sequence of static equilibria "
+             "(trust-region Newton; internal variables updated on "
+             "converged steps only, Gonzalez 2018 Eq. 13), unloads it "
+             "from each unloading point until the punch carries no force, "
+             "and ejects it (Gonzalez 2018, Sec. 5).\n\nWrites die.csv "
+             "(one row per converged step: stage, branch, densities, "
+             "punch and die-wall forces and pressures, coordination "
+             "number, bonding surface, bonds formed and broken, elastic "
+             "recovery, residual radial and ejection pressure, solver "
+             "iterations and residual, and the interior of the compact: "
+             "rho_interior, sigma_zz_interior, sigma_rr_interior, "
+             "coordination_interior, the solid fraction, the axial and "
+             "radial Love-Weber stress [Pa, tension positive] and the "
+             "coordination number of the region farther than two "
+             "mean diameters from the die wall and both punches, each "
+             "sphere counted by the part of its volume inside, nan "
+             "when it holds none; its wall time per row goes to "
+             "timing.csv), branches.csv (one row per "
+             "unloading branch, with the tablet's E and nu), fits.csv and "
+             "fits.md (Eqs. 14-24 fitted to the study), die.png (punch and "
+             "die-wall pressure and Z with the fits of Eqs. 14-15), "
+             "branches.png (elastic recovery, residual radial pressure, "
+             "bonding surface and tablet E with Eqs. 17, 19, 23, 24), VTU "
+             "snapshots, fabric and force histograms, and checkpoints: "
+             "checkpoints/branch-<k>.h5 (Protocol/Rerun branch from) and "
+             "checkpoints/compaction.h5 every Protocol/Checkpoint interval "
+             "steps and at the end (Protocol/Resume from continues an "
+             "interrupted run with the same parameters, its output "
+             "complete; a foreign or damaged checkpoint is refused; "
+             "while running, the output is staged in .<OUTDIR>.partial-<pid> "
+             "next to OUTDIR). Two particle species: Material 2 and "
+             "Packing/Material fractions. Contact/Contact law = elastic "
+             "fills the die with elastic frictionless spheres instead "
+             "(no bonding), and Contact/Formulation = nonlocal then "
+             "selects the nonlocal contact formulation of Gonzalez & "
+             "Cuitino 2012 (Algorithm 1 at every residual) in place of "
+             "Hertz.\n\n"
+             "Built-in default: Material 1 of Gonzalez 2018 Table 1 "
+             "(R = 220 um), 400 particles in a 4 mm die, compacted to an "
+             "in-die relative density of 0.87, with unloading branches (and "
+             "ejection) from 0.75, 0.79, 0.83 and 0.87. The "
+             "full study of Sec. 5 is in apps/parameters/"
+             "die_material1_6512.prm and die_material2_6512.prm."})
       {
-        return "die";
-      }
-
-      std::string
-      summary() const override
-      {
-        return "die compaction, unloading and ejection of a particle bed";
-      }
-
-      std::string
-      description() const override
-      {
-        return "Fills a rigid cylindrical die with bonded elasto-plastic "
-               "spheres by ballistic deposition, compacts the bed by the "
-               "upper punch through a sequence of static equilibria "
-               "(trust-region Newton; internal variables updated on "
-               "converged steps only, Gonzalez 2018 Eq. 13), unloads it "
-               "from each unloading point until the punch carries no force, "
-               "and ejects it (Gonzalez 2018, Sec. 5).\n\nWrites die.csv "
-               "(one row per converged step: stage, branch, densities, "
-               "punch and die-wall forces and pressures, coordination "
-               "number, bonding surface, bonds formed and broken, elastic "
-               "recovery, residual radial and ejection pressure, solver "
-               "iterations and residual, and the interior of the compact: "
-               "rho_interior, sigma_zz_interior, sigma_rr_interior, "
-               "coordination_interior, the solid fraction, the axial and "
-               "radial Love-Weber stress [Pa, tension positive] and the "
-               "coordination number of the region farther than two "
-               "mean diameters from the die wall and both punches, each "
-               "sphere counted by the part of its volume inside, nan "
-               "when it holds none; its wall time per row goes to "
-               "timing.csv), branches.csv (one row per "
-               "unloading branch, with the tablet's E and nu), fits.csv and "
-               "fits.md (Eqs. 14-24 fitted to the study), die.png (punch and "
-               "die-wall pressure and Z with the fits of Eqs. 14-15), "
-               "branches.png (elastic recovery, residual radial pressure, "
-               "bonding surface and tablet E with Eqs. 17, 19, 23, 24), VTU "
-               "snapshots, fabric and force histograms, and checkpoints: "
-               "checkpoints/branch-<k>.h5 (Protocol/Rerun branch from) and "
-               "checkpoints/compaction.h5 every Protocol/Checkpoint interval "
-               "steps and at the end (Protocol/Resume from continues an "
-               "interrupted run with the same parameters, its output "
-               "complete; a foreign or damaged checkpoint is refused; "
-               "while running, the output is staged in .<OUTDIR>.partial-<pid> "
-               "next to OUTDIR). Two particle species: Material 2 and "
-               "Packing/Material fractions. Contact/Contact law = elastic "
-               "fills the die with elastic frictionless spheres instead "
-               "(no bonding), and Contact/Formulation = nonlocal then "
-               "selects the nonlocal contact formulation of Gonzalez & "
-               "Cuitino 2012 (Algorithm 1 at every residual) in place of "
-               "Hertz.\n\n"
-               "Built-in default: Material 1 of Gonzalez 2018 Table 1 "
-               "(R = 220 um), 400 particles in a 4 mm die, compacted to an "
-               "in-die relative density of 0.87, with unloading branches (and "
-               "ejection) from 0.75, 0.79, 0.83 and 0.87. The "
-               "full study of Sec. 5 is in apps/parameters/"
-               "die_material1_6512.prm and die_material2_6512.prm.";
       }
 
       void

@@ -69,51 +69,41 @@ namespace compax::cli
     class JammingCommand : public Command
     {
     public:
-      std::string
-      name() const override
+      JammingCommand()
+          : Command(
+            {"jamming",
+             "where a deposit jams in the die: bonded path against "
+             "frozen-history consolidation, K_Ic > 0 against K_Ic = 0 "
+             "(Gonzalez 2018, Sec. 5.1, Eq. 14)",
+             "Deposits the bed of the die parameters (Material, Bonding, "
+             "Packing, Solver; see `compax die --help`) once and compacts "
+             "it without unloading to Protocol/Final relative density in "
+             "Protocol/Compaction steps, once per case: each protocol of "
+             "Jamming/Protocols (bonded-path: Eq. 13 on every converged "
+             "state from the deposit on; frozen-history: relaxation at "
+             "virgin internal variables until the punch carries 0.5 MPa), "
+             "with the Bonding/Fracture toughness and, if Jamming/Compare "
+             "without bonds, with K_Ic = 0. Eq. (14) Z = Z_c + Z_0 (rho - "
+             "rho_c_Z)^theta is fitted to the compaction states whose "
+             "upper punch carries more than the pressure resolution "
+             "(5 kPa).\n\nWrites jamming.csv (material, fracture_toughness "
+             "[Pa m^1/2], protocol, rho_c_Z, Z_c, theta; empty fit cells "
+             "where Eq. 14 could not be fitted; rho_jammed, Z_jammed: the "
+             "first state whose punches carried 0.5 MPa, a measure that "
+             "needs no fit; rho_c_Z_interior, Z_c_interior, "
+             "theta_interior: Eq. 14 fitted to the die's interior, the "
+             "region farther than two diameters from every wall, with "
+             "its own solid fraction, coordination number and axial "
+             "stress), jamming_path.csv (every "
+             "case's compaction path: density, punch pressure [Pa], "
+             "coordination number, bonds, bonding surface [m^2], whether "
+             "the state is an unjammed relaxation, residual) and "
+             "timing.csv (wall seconds per case). Exit code 3 if a case "
+             "stopped early (its rows so far are kept and fitted).\n\n"
+             "Built-in default: the die defaults (400 particles of "
+             "Material 1), all four cases. Shipped: "
+             "apps/parameters/jamming_material{1,2}_6512.prm."})
       {
-        return "jamming";
-      }
-
-      std::string
-      summary() const override
-      {
-        return "where a deposit jams in the die: bonded path against "
-               "frozen-history consolidation, K_Ic > 0 against K_Ic = 0 "
-               "(Gonzalez 2018, Sec. 5.1, Eq. 14)";
-      }
-
-      std::string
-      description() const override
-      {
-        return "Deposits the bed of the die parameters (Material, Bonding, "
-               "Packing, Solver; see `compax die --help`) once and compacts "
-               "it without unloading to Protocol/Final relative density in "
-               "Protocol/Compaction steps, once per case: each protocol of "
-               "Jamming/Protocols (bonded-path: Eq. 13 on every converged "
-               "state from the deposit on; frozen-history: relaxation at "
-               "virgin internal variables until the punch carries 0.5 MPa), "
-               "with the Bonding/Fracture toughness and, if Jamming/Compare "
-               "without bonds, with K_Ic = 0. Eq. (14) Z = Z_c + Z_0 (rho - "
-               "rho_c_Z)^theta is fitted to the compaction states whose "
-               "upper punch carries more than the pressure resolution "
-               "(5 kPa).\n\nWrites jamming.csv (material, fracture_toughness "
-               "[Pa m^1/2], protocol, rho_c_Z, Z_c, theta; empty fit cells "
-               "where Eq. 14 could not be fitted; rho_jammed, Z_jammed: the "
-               "first state whose punches carried 0.5 MPa, a measure that "
-               "needs no fit; rho_c_Z_interior, Z_c_interior, "
-               "theta_interior: Eq. 14 fitted to the die's interior, the "
-               "region farther than two diameters from every wall, with "
-               "its own solid fraction, coordination number and axial "
-               "stress), jamming_path.csv (every "
-               "case's compaction path: density, punch pressure [Pa], "
-               "coordination number, bonds, bonding surface [m^2], whether "
-               "the state is an unjammed relaxation, residual) and "
-               "timing.csv (wall seconds per case). Exit code 3 if a case "
-               "stopped early (its rows so far are kept and fitted).\n\n"
-               "Built-in default: the die defaults (400 particles of "
-               "Material 1), all four cases. Shipped: "
-               "apps/parameters/jamming_material{1,2}_6512.prm.";
       }
 
       void

@@ -13,29 +13,19 @@ namespace compax::cli
     class DocsCommand : public Command
     {
     public:
-      std::string
-      name() const override
+      DocsCommand()
+          : Command(
+            {"docs",
+             "the parameter reference of every command (parameters.md)",
+             "Writes parameters.md: for every command, what it computes "
+             "and writes (its --help text) and every parameter it reads, "
+             "one Markdown table per subsection with the default, the "
+             "allowed values and the meaning with its unit. Generated "
+             "from the same declarations the commands parse with and "
+             "--print-parameters prints, so it cannot drift from them; "
+             "doc/parameters.md in the source tree is this file, and a "
+             "test regenerates it. Takes no parameters."})
       {
-        return "docs";
-      }
-
-      std::string
-      summary() const override
-      {
-        return "the parameter reference of every command (parameters.md)";
-      }
-
-      std::string
-      description() const override
-      {
-        return "Writes parameters.md: for every command, what it computes "
-               "and writes (its --help text) and every parameter it reads, "
-               "one Markdown table per subsection with the default, the "
-               "allowed values and the meaning with its unit. Generated "
-               "from the same declarations the commands parse with and "
-               "--print-parameters prints, so it cannot drift from them; "
-               "doc/parameters.md in the source tree is this file, and a "
-               "test regenerates it. Takes no parameters.";
       }
 
       void

@@ -162,43 +162,33 @@ namespace compax::cli
     class CalibrateCommand : public Command
     {
     public:
-      std::string
-      name() const override
+      CalibrateCommand()
+          : Command(
+            {"calibrate",
+             "fit k2/k1, kc/k1, beta of the multi-contact law to a "
+             "stress-strain curve (R^2, Eq. 15)",
+             "Calibrates the multi-contact law (Giannis 2021 Sec. 4.1.1): "
+             "prepares one RVE packing as `compax mcdem` does, then runs "
+             "compactions of copies of it with trial law parameters chosen "
+             "by a Nelder-Mead search that maximizes R^2 (Eq. 15) between "
+             "the measured stress and the simulated plate stress at the "
+             "measured strains (loading and, if the curve has a stage "
+             "column, unloading), until R^2 exceeds the target (paper: "
+             "0.95) or the simulation budget is spent. The protocol's "
+             "target strain should be the measured curve's largest "
+             "strain.\n\nWrites calibration.csv (every simulation: the "
+             "parameters and R^2), calibrated_law.prm (the Multi-contact "
+             "law subsection with the best parameters and its R^2), "
+             "calibration_fit.csv (strain, stage, measured, simulated), "
+             "calibration.png. Exit code 3 if the target R^2 was not "
+             "reached (the best parameters are still written).\n\n"
+             "Built-in default: no measured file, so a synthetic curve is "
+             "made by the code with the Multi-contact law entries (MCC-A, "
+             "Table 3) on a packing with another seed (Synthetic seed), "
+             "loaded to 57% strain; beta, k2/k1 and kc/k1 are fitted from "
+             "the initial values on the packing of Cell/Seed. About a "
+             "minute."})
       {
-        return "calibrate";
-      }
-
-      std::string
-      summary() const override
-      {
-        return "fit k2/k1, kc/k1, beta of the multi-contact law to a "
-               "stress-strain curve (R^2, Eq. 15)";
-      }
-
-      std::string
-      description() const override
-      {
-        return "Calibrates the multi-contact law (Giannis 2021 Sec. 4.1.1): "
-               "prepares one RVE packing as `compax mcdem` does, then runs "
-               "compactions of copies of it with trial law parameters chosen "
-               "by a Nelder-Mead search that maximizes R^2 (Eq. 15) between "
-               "the measured stress and the simulated plate stress at the "
-               "measured strains (loading and, if the curve has a stage "
-               "column, unloading), until R^2 exceeds the target (paper: "
-               "0.95) or the simulation budget is spent. The protocol's "
-               "target strain should be the measured curve's largest "
-               "strain.\n\nWrites calibration.csv (every simulation: the "
-               "parameters and R^2), calibrated_law.prm (the Multi-contact "
-               "law subsection with the best parameters and its R^2), "
-               "calibration_fit.csv (strain, stage, measured, simulated), "
-               "calibration.png. Exit code 3 if the target R^2 was not "
-               "reached (the best parameters are still written).\n\n"
-               "Built-in default: no measured file, so a synthetic curve is "
-               "made by the code with the Multi-contact law entries (MCC-A, "
-               "Table 3) on a packing with another seed (Synthetic seed), "
-               "loaded to 57% strain; beta, k2/k1 and kc/k1 are fitted from "
-               "the initial values on the packing of Cell/Seed. About a "
-               "minute.";
       }
 
       void

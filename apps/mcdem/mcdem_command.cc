@@ -43,47 +43,37 @@ namespace compax::cli
     class McdemCommand : public Command
     {
     public:
-      std::string
-      name() const override
+      McdemCommand()
+          : Command(
+            {"mcdem",
+             "explicit multi-contact DEM compaction of a periodic RVE "
+             "(Giannis 2021)",
+             "Explicit DEM (velocity Verlet, Hertz-Mindlin with dashpots "
+             "from the coefficient of restitution, Coulomb friction, "
+             "constant directional rolling torque) with the adhesive "
+             "elasto-plastic multi-contact normal law of Giannis et al. "
+             "2021, Eqs. (6)-(14): each particle's stress tensor from its "
+             "contact forces feeds the pressure term of the next step. "
+             "Particles drawn from a log-normal fitted to x10, x50, x90 "
+             "(Table 1) are inserted at random in a cube periodic in x and "
+             "y between two plates, grown to the packing density, then "
+             "compacted by the top plate at a constant strain rate to a "
+             "target strain or stress and decompressed until the plate "
+             "stress vanishes. Several cell sizes run the RVE-size study "
+             "of Sec. 4.1.\n\nWrites mcdem.csv (time [s], stage 1 "
+             "compression / 2 decompression, strain, stress_zz [Pa, plate "
+             "stress, compression positive], stress_zz_bulk [Pa, Love-Weber "
+             "of the particles], relative_density [sum of particle volumes "
+             "/ cell volume], kinetic_energy and elastic_energy [J], "
+             "coordination_number, mean_particle_pressure [Pa], time_step "
+             "[s], cell_size [m]), mcdem.png with its gnuplot script, and "
+             "for several cell sizes mcdem_cell_<k>.csv and rve_study.csv; "
+             "prints progress and the throughput in particle-steps per "
+             "second.\n\nBuilt-in default: MCC-A (Tables 1-3: E = 258 MPa, "
+             "k2/k1 = 120, kc/k1 = 0.5, phi_f = 0.99, beta = 1.3) in a "
+             "0.6 mm cell (about 70 particles) compacted to 57% strain at "
+             "50 1/s with mass scaling 10, and unloaded; a few seconds."})
       {
-        return "mcdem";
-      }
-
-      std::string
-      summary() const override
-      {
-        return "explicit multi-contact DEM compaction of a periodic RVE "
-               "(Giannis 2021)";
-      }
-
-      std::string
-      description() const override
-      {
-        return "Explicit DEM (velocity Verlet, Hertz-Mindlin with dashpots "
-               "from the coefficient of restitution, Coulomb friction, "
-               "constant directional rolling torque) with the adhesive "
-               "elasto-plastic multi-contact normal law of Giannis et al. "
-               "2021, Eqs. (6)-(14): each particle's stress tensor from its "
-               "contact forces feeds the pressure term of the next step. "
-               "Particles drawn from a log-normal fitted to x10, x50, x90 "
-               "(Table 1) are inserted at random in a cube periodic in x and "
-               "y between two plates, grown to the packing density, then "
-               "compacted by the top plate at a constant strain rate to a "
-               "target strain or stress and decompressed until the plate "
-               "stress vanishes. Several cell sizes run the RVE-size study "
-               "of Sec. 4.1.\n\nWrites mcdem.csv (time [s], stage 1 "
-               "compression / 2 decompression, strain, stress_zz [Pa, plate "
-               "stress, compression positive], stress_zz_bulk [Pa, Love-Weber "
-               "of the particles], relative_density [sum of particle volumes "
-               "/ cell volume], kinetic_energy and elastic_energy [J], "
-               "coordination_number, mean_particle_pressure [Pa], time_step "
-               "[s], cell_size [m]), mcdem.png with its gnuplot script, and "
-               "for several cell sizes mcdem_cell_<k>.csv and rve_study.csv; "
-               "prints progress and the throughput in particle-steps per "
-               "second.\n\nBuilt-in default: MCC-A (Tables 1-3: E = 258 MPa, "
-               "k2/k1 = 120, kc/k1 = 0.5, phi_f = 0.99, beta = 1.3) in a "
-               "0.6 mm cell (about 70 particles) compacted to 57% strain at "
-               "50 1/s with mass scaling 10, and unloaded; a few seconds.";
       }
 
       void

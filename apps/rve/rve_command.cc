@@ -16,61 +16,51 @@ namespace compax::cli
     class RveCommand : public Command
     {
     public:
-      std::string
-      name() const override
+      RveCommand()
+          : Command(
+            {"rve",
+             "periodic RVE along a strain path: stress, tangent, moduli",
+             "Packs bonded elasto-plastic spheres in a fully periodic "
+             "cell (by default a cell cut from a ballistic deposit, "
+             "compacted uniaxially on the bonded path to the initial "
+             "density; or compression of a loose gas, virgin histories) "
+             "and drives the cell along a macroscopic strain path "
+             "(uniaxial strain, hydrostatic, or increments from a CSV), "
+             "each step a static equilibrium of the fluctuations by "
+             "trust-region Newton with the internal variables updated on "
+             "converged steps (Gonzalez 2018 Eq. 13), then optionally "
+             "unloads along the same path. Homogenized Cauchy stress by "
+             "the Love-Weber formula; consistent tangent by static "
+             "condensation (and the affine tangent); elastic moduli from "
+             "the unloading-branch tangent.\n\nWrites rve.csv (per step: "
+             "logarithmic strain of F, Love-Weber stress in Pa, tension "
+             "positive, relative density, coordination number, bonding "
+             "surface, bonds, solver iterations; the time of each step "
+             "and tangent goes to timing.csv), moduli.csv (isotropic E "
+             "and nu and the transversely isotropic constants of the "
+             "unloading-branch condensed tangent; C11 C33 C12 C13 C44 of "
+             "the condensed and affine tangents; tangent_fd_error where "
+             "checked against finite differences), stress_strain.png, "
+             "moduli.png, jamming.csv (uniaxial compaction of the bonded "
+             "law: Gonzalez 2018 Eq. 14 fitted to the loading states whose "
+             "-sigma_zz exceeds the die's pressure resolution, 1e-2 of the "
+             "jamming pressure, as the die fits it: rho_c_Z, Z_c, Z_0, "
+             "theta, rms, jammed_states; empty cells when it cannot be "
+             "fitted), snapshots/*.vtu with snapshots.pvd, and "
+             "checkpoints/rve.h5 if asked. With Size study/Cell sizes: one "
+             "run per cell in size-<N>/, rve_size_study.csv and "
+             "rve_size_spread.csv (Giannis 2021 Sec. 4.1). Contact/Contact "
+             "law = elastic packs elastic frictionless spheres instead (no "
+             "bonding, no tangents: moduli.csv stays empty), and "
+             "Contact/Formulation = nonlocal then selects the nonlocal "
+             "contact formulation of Gonzalez & Cuitino 2012 in place of "
+             "Hertz.\n\nBuilt-in "
+             "default: 200 spheres of Material 1 of Gonzalez 2018 Table 1 "
+             "(E = 5 GPa, nu = 0.25, kappa = 150 MPa, R = 220 um, K_Ic = "
+             "1.26 MPa m^1/2), uniaxial strain from a relative density of "
+             "0.55 to 0.80 in 25 steps, then unloading until the axial "
+             "stress vanishes."})
       {
-        return "rve";
-      }
-
-      std::string
-      summary() const override
-      {
-        return "periodic RVE along a strain path: stress, tangent, moduli";
-      }
-
-      std::string
-      description() const override
-      {
-        return "Packs bonded elasto-plastic spheres in a fully periodic "
-               "cell (by default a cell cut from a ballistic deposit, "
-               "compacted uniaxially on the bonded path to the initial "
-               "density; or compression of a loose gas, virgin histories) "
-               "and drives the cell along a macroscopic strain path "
-               "(uniaxial strain, hydrostatic, or increments from a CSV), "
-               "each step a static equilibrium of the fluctuations by "
-               "trust-region Newton with the internal variables updated on "
-               "converged steps (Gonzalez 2018 Eq. 13), then optionally "
-               "unloads along the same path. Homogenized Cauchy stress by "
-               "the Love-Weber formula; consistent tangent by static "
-               "condensation (and the affine tangent); elastic moduli from "
-               "the unloading-branch tangent.\n\nWrites rve.csv (per step: "
-               "logarithmic strain of F, Love-Weber stress in Pa, tension "
-               "positive, relative density, coordination number, bonding "
-               "surface, bonds, solver iterations; the time of each step "
-               "and tangent goes to timing.csv), moduli.csv (isotropic E "
-               "and nu and the transversely isotropic constants of the "
-               "unloading-branch condensed tangent; C11 C33 C12 C13 C44 of "
-               "the condensed and affine tangents; tangent_fd_error where "
-               "checked against finite differences), stress_strain.png, "
-               "moduli.png, jamming.csv (uniaxial compaction of the bonded "
-               "law: Gonzalez 2018 Eq. 14 fitted to the loading states whose "
-               "-sigma_zz exceeds the die's pressure resolution, 1e-2 of the "
-               "jamming pressure, as the die fits it: rho_c_Z, Z_c, Z_0, "
-               "theta, rms, jammed_states; empty cells when it cannot be "
-               "fitted), snapshots/*.vtu with snapshots.pvd, and "
-               "checkpoints/rve.h5 if asked. With Size study/Cell sizes: one "
-               "run per cell in size-<N>/, rve_size_study.csv and "
-               "rve_size_spread.csv (Giannis 2021 Sec. 4.1). Contact/Contact "
-               "law = elastic packs elastic frictionless spheres instead (no "
-               "bonding, no tangents: moduli.csv stays empty), and "
-               "Contact/Formulation = nonlocal then selects the nonlocal "
-               "contact formulation of Gonzalez & Cuitino 2012 in place of "
-               "Hertz.\n\nBuilt-in "
-               "default: 200 spheres of Material 1 of Gonzalez 2018 Table 1 "
-               "(E = 5 GPa, nu = 0.25, kappa = 150 MPa, R = 220 um, K_Ic = "
-               "1.26 MPa m^1/2), uniaxial strain from a relative density of "
-               "0.55 to 0.80 in 25 steps, then unloading until the axial "
-               "stress vanishes.";
       }
 
       void

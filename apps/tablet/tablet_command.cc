@@ -93,50 +93,40 @@ namespace compax::cli
     class TabletCommand : public Command
     {
     public:
-      std::string
-      name() const override
+      TabletCommand()
+          : Command(
+            {"tablet",
+             "continuum die compaction, unloading and ejection (deal.II)",
+             "Quasi-static finite element model of a powder compact in a "
+             "rigid cylindrical die with flat-faced or concave (spherical "
+             "cup, built-in or Gmsh mesh) upper punch: the upper "
+             "punch compacts the powder (lower punch fixed), is withdrawn "
+             "(the compact separates freely), and the lower punch ejects "
+             "the tablet, which expands freely above the die. "
+             "Axisymmetric r-z model (or a 3-D quarter cylinder), updated "
+             "Lagrangian large deformation, Newton with consistent "
+             "tangent, penalty contact with Coulomb wall friction, "
+             "Trilinos linear algebra on a distributed mesh (runs under "
+             "mpirun). Materials: density-dependent Drucker-Prager Cap "
+             "(tables in CSV) or linear elasticity.\n\nWrites tablet.csv "
+             "(step,time,stage,punch displacements, upper/lower punch and "
+             "mean die-wall pressures, ejection force, mean relative "
+             "density, forces, ..., newton_iterations, mean_stress: "
+             "tr(sigma) / 3 averaged over the compact's current volume, "
+             "tension positive, which equilibrium makes the boundary "
+             "tractions' virial over the volume, ~0 for the free ejected "
+             "tablet; SI units, pressures positive in compression; the "
+             "summary adds the FE2 floor's share of it), tablet.pvd with "
+             "tablet_NNNN.pvtu/vtu fields "
+             "(displacement, relative density, stress, plastic strain) "
+             "and the same fields as tablet_NNNN.h5 with tablet.xdmf, "
+             "tablet.png (pressures and ejection force against time) with "
+             "its gnuplot script, and prints progress and a summary.\n\n"
+             "Built-in default: a 10 mm flat-faced tablet of "
+             "microcrystalline cellulose (built-in DPC table), 7 mm fill "
+             "at relative density 0.5, compacted to 0.9 in the die, "
+             "unloaded and ejected, mu = 0.25."})
       {
-        return "tablet";
-      }
-
-      std::string
-      summary() const override
-      {
-        return "continuum die compaction, unloading and ejection (deal.II)";
-      }
-
-      std::string
-      description() const override
-      {
-        return "Quasi-static finite element model of a powder compact in a "
-               "rigid cylindrical die with flat-faced or concave (spherical "
-               "cup, built-in or Gmsh mesh) upper punch: the upper "
-               "punch compacts the powder (lower punch fixed), is withdrawn "
-               "(the compact separates freely), and the lower punch ejects "
-               "the tablet, which expands freely above the die. "
-               "Axisymmetric r-z model (or a 3-D quarter cylinder), updated "
-               "Lagrangian large deformation, Newton with consistent "
-               "tangent, penalty contact with Coulomb wall friction, "
-               "Trilinos linear algebra on a distributed mesh (runs under "
-               "mpirun). Materials: density-dependent Drucker-Prager Cap "
-               "(tables in CSV) or linear elasticity.\n\nWrites tablet.csv "
-               "(step,time,stage,punch displacements, upper/lower punch and "
-               "mean die-wall pressures, ejection force, mean relative "
-               "density, forces, ..., newton_iterations, mean_stress: "
-               "tr(sigma) / 3 averaged over the compact's current volume, "
-               "tension positive, which equilibrium makes the boundary "
-               "tractions' virial over the volume, ~0 for the free ejected "
-               "tablet; SI units, pressures positive in compression; the "
-               "summary adds the FE2 floor's share of it), tablet.pvd with "
-               "tablet_NNNN.pvtu/vtu fields "
-               "(displacement, relative density, stress, plastic strain) "
-               "and the same fields as tablet_NNNN.h5 with tablet.xdmf, "
-               "tablet.png (pressures and ejection force against time) with "
-               "its gnuplot script, and prints progress and a summary.\n\n"
-               "Built-in default: a 10 mm flat-faced tablet of "
-               "microcrystalline cellulose (built-in DPC table), 7 mm fill "
-               "at relative density 0.5, compacted to 0.9 in the die, "
-               "unloaded and ejected, mu = 0.25.";
       }
 
       void
