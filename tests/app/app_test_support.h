@@ -275,7 +275,22 @@ namespace compax::testing
     {
       return column.empty() ? 0 : column.begin()->second.size();
     }
+
+    /// Whether the header names @p name.
+    bool
+    has(const std::string &name) const
+    {
+      return std::find(header.begin(), header.end(), name) != header.end();
+    }
   };
+
+  /// The header of @p csv names every one of @p columns.
+  inline void
+  expect_columns(const Csv &csv, const std::vector<std::string> &columns)
+  {
+    for (const std::string &column : columns)
+      EXPECT_TRUE(csv.has(column)) << column;
+  }
 
   /// A resumed run repeats the uninterrupted one: equal rows (bitwise, the
   /// same binary takes the same path) of @p columns from row @p first on.

@@ -10,6 +10,7 @@
 
 using compax::testing::AppTest;
 using compax::testing::Csv;
+using compax::testing::expect_columns;
 
 namespace
 {
@@ -77,17 +78,15 @@ TEST_F(TabletApp, DpcCycleConservesMassAndEjectsByCoulombFriction)
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("Tablet cycle completed"), std::string::npos);
   const Csv csv(folder / "out" / "tablet.csv");
-  for (const std::string column : {"time",
-                                   "stage",
-                                   "upper_punch_displacement",
-                                   "upper_punch_pressure",
-                                   "lower_punch_pressure",
-                                   "die_wall_pressure",
-                                   "ejection_force",
-                                   "mean_relative_density"})
-    EXPECT_NE(std::find(csv.header.begin(), csv.header.end(), column),
-              csv.header.end())
-      << column;
+  expect_columns(csv,
+                 {"time",
+                  "stage",
+                  "upper_punch_displacement",
+                  "upper_punch_pressure",
+                  "lower_punch_pressure",
+                  "die_wall_pressure",
+                  "ejection_force",
+                  "mean_relative_density"});
   ASSERT_EQ(csv.rows(), 1u + 30 + 8 + 20);
   // End of compaction: the compact fills the die between the punches, so
   // rho = rho_0 H_0 / (H_0 - stroke) (defaults: 0.5, 7 mm, 3.11 mm).
