@@ -526,38 +526,41 @@ TEST_F(CompareCommand, Fe2RowsAreFilledExactlyWhereTheFe2RunGot)
 
 TEST_F(CompareCommand, FinalDensityMustBeAnUnloadingPoint)
 {
-  write("bad.prm",
-        "subsection Die\n  set Final relative density = 0.85\n"
-        "  set Unloading points = 0.75, 0.8\nend\n");
-  expect_rejected(compax("compare bad.prm -o out"), "Die/Unloading points");
+  expect_prm_rejected("compare",
+                      "subsection Die\n  set Final relative density = 0.85\n"
+                      "  set Unloading points = 0.75, 0.8\nend\n",
+                      "Die/Unloading points");
 }
 
 TEST_F(CompareCommand, OneUnloadingPointIsBadInput)
 {
-  write("bad.prm", "subsection Die\n  set Unloading points = 0.87\nend\n");
-  expect_rejected(compax("compare bad.prm -o out"), "Die/Unloading points");
+  expect_prm_rejected("compare",
+                      "subsection Die\n  set Unloading points = 0.87\nend\n",
+                      "Die/Unloading points");
 }
 
 TEST_F(CompareCommand, RvePathBelowTheDiesFinalDensityIsBadInput)
 {
   // The RVE path must reach at least the die's final density (0.87 by
   // default): the tablet's table and interior.csv are compared up to it.
-  write("bad.prm", "subsection RVE\n  set Final relative density = 0.8\nend\n");
-  expect_rejected(compax("compare bad.prm -o out"),
-                  "entry 'RVE/Final relative density' = 0.8");
+  expect_prm_rejected(
+    "compare",
+    "subsection RVE\n  set Final relative density = 0.8\nend\n",
+    "entry 'RVE/Final relative density' = 0.8");
 }
 
 TEST_F(CompareCommand, BadFe2SwitchIsBadInput)
 {
-  write("bad.prm", "subsection Compare\n  set FE2 = maybe\nend\n");
-  expect_rejected(compax("compare bad.prm -o out"), "FE2");
+  expect_prm_rejected("compare",
+                      "subsection Compare\n  set FE2 = maybe\nend\n",
+                      "FE2");
 }
 
 TEST_F(CompareCommand, DieSettingsAreCheckedBeforeAnyRun)
 {
   // A die narrower than two particle diameters: the particle study rejects
   // it, before compare writes anything.
-  write("bad.prm", "subsection Die\n  set Die diameter = 5e-4\nend\n");
-  expect_rejected(compax("compare bad.prm -o out"),
-                  "entry 'Die/Die diameter' = 0.0005");
+  expect_prm_rejected("compare",
+                      "subsection Die\n  set Die diameter = 5e-4\nend\n",
+                      "entry 'Die/Die diameter' = 0.0005");
 }

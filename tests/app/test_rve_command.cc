@@ -291,38 +291,40 @@ TEST_F(RveCommand, SizeStudyReportsTheSpreadBetweenSizes)
 
 TEST_F(RveCommand, TargetBelowTheInitialDensityIsRejected)
 {
-  write("bad.prm",
-        "subsection Strain path\n set Target relative density = 0.5\nend\n");
-  expect_rejected(compax("rve bad.prm -o out"),
-                  "Strain path/Target relative density");
+  expect_prm_rejected(
+    "rve",
+    "subsection Strain path\n set Target relative density = 0.5\nend\n",
+    "Strain path/Target relative density");
 }
 
 TEST_F(RveCommand, CellNarrowerThanAParticleIsRejected)
 {
-  write("bad.prm", "subsection Packing\n set Number of particles = 3\nend\n");
-  expect_rejected(compax("rve bad.prm -o out"), "Packing/Number of particles");
+  expect_prm_rejected("rve",
+                      "subsection Packing\n set Number of particles = 3\nend\n",
+                      "Packing/Number of particles");
 }
 
 TEST_F(RveCommand, StrainFileWithoutAColumnIsRejected)
 {
-  write("bad.prm",
-        "subsection Strain path\n set Path = csv\n"
-        " set Strain increments file = bad.prm\nend\n");
-  expect_rejected(compax("rve bad.prm -o out"),
-                  "Strain path/Strain increments file");
+  expect_prm_rejected("rve",
+                      "subsection Strain path\n set Path = csv\n"
+                      " set Strain increments file = bad.prm\nend\n",
+                      "Strain path/Strain increments file");
 }
 
 TEST_F(RveCommand, SingleCellSizeIsRejected)
 {
-  write("bad.prm", "subsection Size study\n set Cell sizes = 100\nend\n");
-  expect_rejected(compax("rve bad.prm -o out"), "Size study/Cell sizes");
+  expect_prm_rejected("rve",
+                      "subsection Size study\n set Cell sizes = 100\nend\n",
+                      "Size study/Cell sizes");
 }
 
 TEST_F(RveCommand, MissingCheckpointIsRejected)
 {
-  write("bad.prm",
-        "subsection Checkpoints\n set Resume from = nowhere.h5\nend\n");
-  expect_rejected(compax("rve bad.prm -o out"), "Checkpoints/Resume from");
+  expect_prm_rejected(
+    "rve",
+    "subsection Checkpoints\n set Resume from = nowhere.h5\nend\n",
+    "Checkpoints/Resume from");
 }
 
 /// A registered law runs in `compax rve` through Contact/Contact law alone
