@@ -49,6 +49,21 @@ namespace
     return rho0 * H0 / gap;
   }
 
+  /// A compare.csv @p value at density @p rho is the punch pressure linear
+  /// between the tablet's samples (x0, y0) and (x1, y1), to 1e-9 of it
+  /// (1e-6 Pa absolute).
+  void
+  expect_interpolated(const double value,
+                      const double rho,
+                      const double x0,
+                      const double y0,
+                      const double x1,
+                      const double y1)
+  {
+    const double expected = y0 + (y1 - y0) * (rho - x0) / (x1 - x0);
+    EXPECT_NEAR(value, expected, 1e-9 * std::abs(expected) + 1e-6) << rho;
+  }
+
   /// A tiny study: 150 particles, a 3 mm die to 0.8, a 40-particle RVE.
   const std::string tiny = "subsection Compare\n  set FE2 = false\nend\n"
                            "subsection Die\n"
@@ -438,11 +453,8 @@ TEST_F(CompareCommand, TinyStudyComparesTheSameDieAndMaterial)
                 continue;
               const double y0 = tablet.column.at("upper_punch_pressure")[j - 1];
               const double y1 = tablet.column.at("upper_punch_pressure")[j];
-              const double expected = y0 + (y1 - y0) * (rho - x0) / (x1 - x0);
-              EXPECT_NEAR(table.column.at("value")[k],
-                          expected,
-                          1e-9 * std::abs(expected) + 1e-6)
-                << rho;
+              expect_interpolated(
+                table.column.at("value")[k], rho, x0, y0, x1, y1);
             }
         }
     }
@@ -510,12 +522,8 @@ TEST_F(CompareCommand, Fe2RowsAreFilledExactlyWhereTheFe2RunGot)
       std::size_t j = 1;
       while (x[j] < rho)
         ++j;
-      const double expected
-        = y[j - 1] + (y[j] - y[j - 1]) * (rho - x[j - 1]) / (x[j] - x[j - 1]);
-      EXPECT_NEAR(table.column.at("value")[k],
-                  expected,
-                  1e-9 * std::abs(expected) + 1e-6)
-        << rho;
+      expect_interpolated(
+        table.column.at("value")[k], rho, x[j - 1], y[j - 1], x[j], y[j]);
     }
   EXPECT_GT(rows, 5u);
   EXPECT_GT(filled, 0u);
