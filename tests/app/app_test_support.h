@@ -128,6 +128,19 @@ namespace compax::testing
       EXPECT_TRUE(left.empty()) << left.front();
     }
 
+    /// Refused input that writes nothing: exit code 2, stderr names every
+    /// piece of @p expected, and the output folder @p out does not exist.
+    void
+    expect_refused_without_output(const RunResult                &r,
+                                  const std::vector<std::string> &expected,
+                                  const std::string &out = "out") const
+    {
+      EXPECT_EQ(r.exit_code, 2);
+      for (const std::string &piece : expected)
+        EXPECT_NE(r.err.find(piece), std::string::npos) << r.err;
+      EXPECT_FALSE(std::filesystem::exists(folder / out));
+    }
+
     /// Writes a file in the test folder.
     void
     write(const std::string &name, const std::string &text) const
@@ -153,6 +166,17 @@ namespace compax::testing
       EXPECT_NE(r.err.find(expected), std::string::npos) << "stderr: " << r.err;
       EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
       EXPECT_EQ(entries(), std::vector<std::string>{"bad.prm"});
+    }
+
+    /// `compax <command>` refuses the parameter file @p prm (written as
+    /// `bad.prm`) as expect_rejected says.
+    void
+    expect_prm_rejected(const std::string &command,
+                        const std::string &prm,
+                        const std::string &expected) const
+    {
+      write("bad.prm", prm);
+      expect_rejected(compax(command + " bad.prm -o out"), expected);
     }
 
     /// Names in the test folder (for "no half-written output" checks).
@@ -196,9 +220,7 @@ namespace compax::testing
     expect_row_rejected(const std::string &command) const
     {
       const BadInput &bad = GetParam();
-      write("bad.prm", bad.prm);
-      expect_rejected(compax(command + " bad.prm -o out"),
-                      bad.expected_in_message);
+      expect_prm_rejected(command, bad.prm, bad.expected_in_message);
     }
   };
 
@@ -275,7 +297,22 @@ namespace compax::testing
     {
       return column.empty() ? 0 : column.begin()->second.size();
     }
+
+    /// Whether the header names @p name.
+    bool
+    has(const std::string &name) const
+    {
+      return std::find(header.begin(), header.end(), name) != header.end();
+    }
   };
+
+  /// The header of @p csv names every one of @p columns.
+  inline void
+  expect_columns(const Csv &csv, const std::vector<std::string> &columns)
+  {
+    for (const std::string &column : columns)
+      EXPECT_TRUE(csv.has(column)) << column;
+  }
 
   /// A resumed run repeats the uninterrupted one: equal rows (bitwise, the
   /// same binary takes the same path) of @p columns from row @p first on.

@@ -68,6 +68,7 @@ TEST_F(BedCommand, SmallBedBalancesWallForces)
 
 TEST_F(BedCommand, RejectsUnknownFormulation)
 {
-  write("bad.prm", "set Formulations = hertz, mindlin\n");
-  expect_rejected(compax("bed bad.prm -o out"), "Formulations");
+  expect_prm_rejected("bed",
+                      "set Formulations = hertz, mindlin\n",
+                      "Formulations");
 }

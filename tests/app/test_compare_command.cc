@@ -49,6 +49,21 @@ namespace
     return rho0 * H0 / gap;
   }
 
+  /// A compare.csv @p value at density @p rho is the punch pressure linear
+  /// between the tablet's samples (x0, y0) and (x1, y1), to 1e-9 of it
+  /// (1e-6 Pa absolute).
+  void
+  expect_interpolated(const double value,
+                      const double rho,
+                      const double x0,
+                      const double y0,
+                      const double x1,
+                      const double y1)
+  {
+    const double expected = y0 + (y1 - y0) * (rho - x0) / (x1 - x0);
+    EXPECT_NEAR(value, expected, 1e-9 * std::abs(expected) + 1e-6) << rho;
+  }
+
   /// A tiny study: 150 particles, a 3 mm die to 0.8, a 40-particle RVE.
   const std::string tiny = "subsection Compare\n  set FE2 = false\nend\n"
                            "subsection Die\n"
@@ -438,11 +453,8 @@ TEST_F(CompareCommand, TinyStudyComparesTheSameDieAndMaterial)
                 continue;
               const double y0 = tablet.column.at("upper_punch_pressure")[j - 1];
               const double y1 = tablet.column.at("upper_punch_pressure")[j];
-              const double expected = y0 + (y1 - y0) * (rho - x0) / (x1 - x0);
-              EXPECT_NEAR(table.column.at("value")[k],
-                          expected,
-                          1e-9 * std::abs(expected) + 1e-6)
-                << rho;
+              expect_interpolated(
+                table.column.at("value")[k], rho, x0, y0, x1, y1);
             }
         }
     }
@@ -510,12 +522,8 @@ TEST_F(CompareCommand, Fe2RowsAreFilledExactlyWhereTheFe2RunGot)
       std::size_t j = 1;
       while (x[j] < rho)
         ++j;
-      const double expected
-        = y[j - 1] + (y[j] - y[j - 1]) * (rho - x[j - 1]) / (x[j] - x[j - 1]);
-      EXPECT_NEAR(table.column.at("value")[k],
-                  expected,
-                  1e-9 * std::abs(expected) + 1e-6)
-        << rho;
+      expect_interpolated(
+        table.column.at("value")[k], rho, x[j - 1], y[j - 1], x[j], y[j]);
     }
   EXPECT_GT(rows, 5u);
   EXPECT_GT(filled, 0u);
@@ -526,38 +534,41 @@ TEST_F(CompareCommand, Fe2RowsAreFilledExactlyWhereTheFe2RunGot)
 
 TEST_F(CompareCommand, FinalDensityMustBeAnUnloadingPoint)
 {
-  write("bad.prm",
-        "subsection Die\n  set Final relative density = 0.85\n"
-        "  set Unloading points = 0.75, 0.8\nend\n");
-  expect_rejected(compax("compare bad.prm -o out"), "Die/Unloading points");
+  expect_prm_rejected("compare",
+                      "subsection Die\n  set Final relative density = 0.85\n"
+                      "  set Unloading points = 0.75, 0.8\nend\n",
+                      "Die/Unloading points");
 }
 
 TEST_F(CompareCommand, OneUnloadingPointIsBadInput)
 {
-  write("bad.prm", "subsection Die\n  set Unloading points = 0.87\nend\n");
-  expect_rejected(compax("compare bad.prm -o out"), "Die/Unloading points");
+  expect_prm_rejected("compare",
+                      "subsection Die\n  set Unloading points = 0.87\nend\n",
+                      "Die/Unloading points");
 }
 
 TEST_F(CompareCommand, RvePathBelowTheDiesFinalDensityIsBadInput)
 {
   // The RVE path must reach at least the die's final density (0.87 by
   // default): the tablet's table and interior.csv are compared up to it.
-  write("bad.prm", "subsection RVE\n  set Final relative density = 0.8\nend\n");
-  expect_rejected(compax("compare bad.prm -o out"),
-                  "entry 'RVE/Final relative density' = 0.8");
+  expect_prm_rejected(
+    "compare",
+    "subsection RVE\n  set Final relative density = 0.8\nend\n",
+    "entry 'RVE/Final relative density' = 0.8");
 }
 
 TEST_F(CompareCommand, BadFe2SwitchIsBadInput)
 {
-  write("bad.prm", "subsection Compare\n  set FE2 = maybe\nend\n");
-  expect_rejected(compax("compare bad.prm -o out"), "FE2");
+  expect_prm_rejected("compare",
+                      "subsection Compare\n  set FE2 = maybe\nend\n",
+                      "FE2");
 }
 
 TEST_F(CompareCommand, DieSettingsAreCheckedBeforeAnyRun)
 {
   // A die narrower than two particle diameters: the particle study rejects
   // it, before compare writes anything.
-  write("bad.prm", "subsection Die\n  set Die diameter = 5e-4\nend\n");
-  expect_rejected(compax("compare bad.prm -o out"),
-                  "entry 'Die/Die diameter' = 0.0005");
+  expect_prm_rejected("compare",
+                      "subsection Die\n  set Die diameter = 5e-4\nend\n",
+                      "entry 'Die/Die diameter' = 0.0005");
 }

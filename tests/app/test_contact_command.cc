@@ -142,10 +142,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST_F(ContactCommand, MissingFileIsRejected)
 {
-  const auto r = compax("contact nowhere.prm -o out");
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("nowhere.prm"), std::string::npos);
-  EXPECT_FALSE(std::filesystem::exists(folder / "out"));
+  expect_refused_without_output(compax("contact nowhere.prm -o out"),
+                                {"nowhere.prm"});
 }
 
 TEST_F(ContactCommand, EveryLawRunsAndMulticontactReducesToHertz)

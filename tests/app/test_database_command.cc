@@ -150,17 +150,18 @@ TEST_F(DatabaseCommand, FittedCapPassesThroughTheCompactionStates)
 
 TEST_F(DatabaseCommand, RejectsBranchDensitiesOutOfOrder)
 {
-  write("bad.prm",
-        "subsection Paths\n set Branch densities = 0.80, 0.75\nend\n");
-  expect_rejected(compax("database bad.prm -o out"), "Branch densities");
+  expect_prm_rejected(
+    "database",
+    "subsection Paths\n set Branch densities = 0.80, 0.75\nend\n",
+    "Branch densities");
 }
 
 TEST_F(DatabaseCommand, RejectsBranchBeyondFinalDensity)
 {
-  write("bad.prm",
-        "subsection Paths\n set Final relative density = 0.8\n"
-        " set Branch densities = 0.70, 0.85\nend\n");
-  expect_rejected(compax("database bad.prm -o out"), "Branch densities");
+  expect_prm_rejected("database",
+                      "subsection Paths\n set Final relative density = 0.8\n"
+                      " set Branch densities = 0.70, 0.85\nend\n",
+                      "Branch densities");
 }
 
 /// Every row's logarithmic strain satisfies the mass balance
@@ -297,6 +298,8 @@ TEST_F(DatabaseCommand, RejectsCheckpointOfAnotherStudy)
   std::filesystem::remove(folder / "checkpoint.h5");
   expect_rejected(r, "Resume from");
 
-  write("bad.prm", "subsection Checkpoints\n set Resume from = bad.prm\nend\n");
-  expect_rejected(compax("database bad.prm -o out"), "Resume from");
+  expect_prm_rejected(
+    "database",
+    "subsection Checkpoints\n set Resume from = bad.prm\nend\n",
+    "Resume from");
 }

@@ -14,6 +14,7 @@
 using compax::testing::AppTest;
 using compax::testing::Csv;
 using compax::testing::expect_balanced_punches;
+using compax::testing::expect_columns;
 
 namespace
 {
@@ -31,18 +32,16 @@ TEST_F(DieCommand, SmallBedCompactsUnloadsAndEjects)
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
 
   const Csv die(folder / "out" / "die.csv");
-  for (const char *column : {"stage",
-                             "branch",
-                             "relative_density",
-                             "upper_punch_force",
-                             "lower_punch_force",
-                             "die_wall_force",
-                             "coordination_number",
-                             "bonding_surface",
-                             "residual"})
-    EXPECT_NE(std::find(die.header.begin(), die.header.end(), column),
-              die.header.end())
-      << column;
+  expect_columns(die,
+                 {"stage",
+                  "branch",
+                  "relative_density",
+                  "upper_punch_force",
+                  "lower_punch_force",
+                  "die_wall_force",
+                  "coordination_number",
+                  "bonding_surface",
+                  "residual"});
   ASSERT_GT(die.rows(), 20u);
 
   expect_balanced_punches(die);

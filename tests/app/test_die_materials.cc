@@ -66,22 +66,25 @@ TEST_F(DieMaterials, TwoMaterialBedCompactsWithTheAskedFractions)
 
 TEST_F(DieMaterials, FractionsThatDoNotSumToOneAreRejected)
 {
-  write("bad.prm",
-        "subsection Packing\n set Material fractions = 0.3, 0.6\nend\n");
-  expect_rejected(compax("die bad.prm -o out"), "Material fractions");
+  expect_prm_rejected(
+    "die",
+    "subsection Packing\n set Material fractions = 0.3, 0.6\nend\n",
+    "Material fractions");
 }
 
 TEST_F(DieMaterials, ThreeFractionsAreRejected)
 {
-  write("bad.prm",
-        "subsection Packing\n set Material fractions = 0.2, 0.3, 0.5\nend\n");
-  expect_rejected(compax("die bad.prm -o out"), "Material fractions");
+  expect_prm_rejected(
+    "die",
+    "subsection Packing\n set Material fractions = 0.2, 0.3, 0.5\nend\n",
+    "Material fractions");
 }
 
 TEST_F(DieMaterials, SecondSpeciesOfAnotherRadiusIsRejected)
 {
-  write("bad.prm",
-        "subsection Material 2\n set Radius = 100e-6\nend\n"
-        "subsection Packing\n set Material fractions = 0.5, 0.5\nend\n");
-  expect_rejected(compax("die bad.prm -o out"), "Material 2/Radius");
+  expect_prm_rejected(
+    "die",
+    "subsection Material 2\n set Radius = 100e-6\nend\n"
+    "subsection Packing\n set Material fractions = 0.5, 0.5\nend\n",
+    "Material 2/Radius");
 }

@@ -12,6 +12,7 @@
 
 using compax::testing::AppTest;
 using compax::testing::Csv;
+using compax::testing::expect_columns;
 
 namespace
 {
@@ -53,13 +54,6 @@ namespace
         }
     EXPECT_GT(checked, 0u);
   }
-
-  bool
-  has(const Csv &csv, const std::string &column)
-  {
-    return std::find(csv.header.begin(), csv.header.end(), column)
-           != csv.header.end();
-  }
 } // namespace
 
 class RveCommand : public AppTest
@@ -73,47 +67,47 @@ TEST_F(RveCommand, UniaxialPathFollowsMassConservationAndUnloads)
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
 
   const Csv rve(folder / "out" / "rve.csv");
-  for (const char *column : {"step",
-                             "stage",
-                             "relative_density",
-                             "eps_xx",
-                             "eps_yy",
-                             "eps_zz",
-                             "eps_yz",
-                             "eps_xz",
-                             "eps_xy",
-                             "sigma_xx",
-                             "sigma_yy",
-                             "sigma_zz",
-                             "sigma_xy",
-                             "sigma_yz",
-                             "sigma_xz",
-                             "mean_pressure",
-                             "coordination_number",
-                             "bonding_surface",
-                             "bonds_formed",
-                             "bonds_broken",
-                             "iterations",
-                             "residual"})
-    EXPECT_TRUE(has(rve, column)) << column;
+  expect_columns(rve,
+                 {"step",
+                  "stage",
+                  "relative_density",
+                  "eps_xx",
+                  "eps_yy",
+                  "eps_zz",
+                  "eps_yz",
+                  "eps_xz",
+                  "eps_xy",
+                  "sigma_xx",
+                  "sigma_yy",
+                  "sigma_zz",
+                  "sigma_xy",
+                  "sigma_yz",
+                  "sigma_xz",
+                  "mean_pressure",
+                  "coordination_number",
+                  "bonding_surface",
+                  "bonds_formed",
+                  "bonds_broken",
+                  "iterations",
+                  "residual"});
   const Csv moduli(folder / "out" / "moduli.csv");
-  for (const char *column : {"step",
-                             "relative_density",
-                             "E",
-                             "nu",
-                             "E_p",
-                             "nu_p",
-                             "E_z",
-                             "nu_zp",
-                             "G_zp",
-                             "C11",
-                             "C33",
-                             "C12",
-                             "C13",
-                             "C44",
-                             "C33_affine",
-                             "tangent_fd_error"})
-    EXPECT_TRUE(has(moduli, column)) << column;
+  expect_columns(moduli,
+                 {"step",
+                  "relative_density",
+                  "E",
+                  "nu",
+                  "E_p",
+                  "nu_p",
+                  "E_z",
+                  "nu_zp",
+                  "G_zp",
+                  "C11",
+                  "C33",
+                  "C12",
+                  "C13",
+                  "C44",
+                  "C33_affine",
+                  "tangent_fd_error"});
 
   const auto  &rho   = rve.column.at("relative_density");
   const auto  &stage = rve.text.at("stage");
@@ -270,7 +264,7 @@ TEST_F(RveCommand, SizeStudyReportsTheSpreadBetweenSizes)
                         "E_loaded",
                         "nu_loaded",
                         "E_end"})
-    ASSERT_TRUE(has(study, c)) << c;
+    ASSERT_TRUE(study.has(c)) << c;
   // Monodisperse cells at equal density: edge / diameter = (pi N / (6
   // rho_0))^(1/3).
   for (std::size_t i = 0; i < 2; ++i)
@@ -297,38 +291,40 @@ TEST_F(RveCommand, SizeStudyReportsTheSpreadBetweenSizes)
 
 TEST_F(RveCommand, TargetBelowTheInitialDensityIsRejected)
 {
-  write("bad.prm",
-        "subsection Strain path\n set Target relative density = 0.5\nend\n");
-  expect_rejected(compax("rve bad.prm -o out"),
-                  "Strain path/Target relative density");
+  expect_prm_rejected(
+    "rve",
+    "subsection Strain path\n set Target relative density = 0.5\nend\n",
+    "Strain path/Target relative density");
 }
 
 TEST_F(RveCommand, CellNarrowerThanAParticleIsRejected)
 {
-  write("bad.prm", "subsection Packing\n set Number of particles = 3\nend\n");
-  expect_rejected(compax("rve bad.prm -o out"), "Packing/Number of particles");
+  expect_prm_rejected("rve",
+                      "subsection Packing\n set Number of particles = 3\nend\n",
+                      "Packing/Number of particles");
 }
 
 TEST_F(RveCommand, StrainFileWithoutAColumnIsRejected)
 {
-  write("bad.prm",
-        "subsection Strain path\n set Path = csv\n"
-        " set Strain increments file = bad.prm\nend\n");
-  expect_rejected(compax("rve bad.prm -o out"),
-                  "Strain path/Strain increments file");
+  expect_prm_rejected("rve",
+                      "subsection Strain path\n set Path = csv\n"
+                      " set Strain increments file = bad.prm\nend\n",
+                      "Strain path/Strain increments file");
 }
 
 TEST_F(RveCommand, SingleCellSizeIsRejected)
 {
-  write("bad.prm", "subsection Size study\n set Cell sizes = 100\nend\n");
-  expect_rejected(compax("rve bad.prm -o out"), "Size study/Cell sizes");
+  expect_prm_rejected("rve",
+                      "subsection Size study\n set Cell sizes = 100\nend\n",
+                      "Size study/Cell sizes");
 }
 
 TEST_F(RveCommand, MissingCheckpointIsRejected)
 {
-  write("bad.prm",
-        "subsection Checkpoints\n set Resume from = nowhere.h5\nend\n");
-  expect_rejected(compax("rve bad.prm -o out"), "Checkpoints/Resume from");
+  expect_prm_rejected(
+    "rve",
+    "subsection Checkpoints\n set Resume from = nowhere.h5\nend\n",
+    "Checkpoints/Resume from");
 }
 
 /// A registered law runs in `compax rve` through Contact/Contact law alone

@@ -61,12 +61,12 @@ TEST_F(TabletMultiscale, Fe2MaterialIsAcceptedAtCheck)
 
 TEST_F(TabletMultiscale, BadDatabasePathsAreBadInput)
 {
-  write("bad.prm",
-        "subsection Material\n  set Model = multiscale-database\nend\n"
-        "subsection Multiscale\n  subsection Paths\n"
-        "    set Branch densities = 0.8, 0.7\n  end\nend\n");
-  expect_rejected(compax("tablet bad.prm -o out"),
-                  "Multiscale/Paths/Branch densities");
+  expect_prm_rejected(
+    "tablet",
+    "subsection Material\n  set Model = multiscale-database\nend\n"
+    "subsection Multiscale\n  subsection Paths\n"
+    "    set Branch densities = 0.8, 0.7\n  end\nend\n",
+    "Multiscale/Paths/Branch densities");
 }
 
 TEST_F(TabletMultiscale, Fe2RunResumedFromItsCheckpointIsTheUninterruptedRun)

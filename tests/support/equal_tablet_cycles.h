@@ -1,6 +1,7 @@
 #pragma once
-// The check of the two-rank tablet tests: a distributed cycle gives the
-// one-rank cycle's punch and die-wall forces (and, optionally, densities).
+// The run and the check of the two-rank tablet tests: a distributed cycle
+// gives the one-rank cycle's punch and die-wall forces (and, optionally,
+// densities).
 #include "fem/tablet_process.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,21 @@
 
 namespace compax::testing
 {
+  /// Every step of @p process on @p solver, which must complete the cycle.
+  template <int dim>
+  std::vector<fem::TabletStep>
+  recorded_cycle(fem::TabletSolver<dim>   &solver,
+                 const fem::TabletProcess &process)
+  {
+    std::vector<fem::TabletStep> steps;
+    EXPECT_TRUE(fem::run_tablet_process<dim>(solver,
+                                             process,
+                                             [&](const fem::TabletStep &st) {
+                                               steps.push_back(st);
+                                             }));
+    return steps;
+  }
+
   /// Forces step by step within 1e-6 of the largest upper punch force
   /// (both runs converge to the Newton tolerance from different
   /// round-off); mean densities within @p density_tolerance if positive.

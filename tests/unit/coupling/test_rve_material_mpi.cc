@@ -57,10 +57,7 @@ namespace
     p.unloading_steps         = 2;
     p.ejection_steps          = 0;
     p.ejection_displacement   = 0.0;
-    std::vector<fem::TabletStep> steps;
-    EXPECT_TRUE(fem::run_tablet_process<2>(
-      solver, p, [&](const fem::TabletStep &st) { steps.push_back(st); }));
-    return steps;
+    return compax::testing::recorded_cycle(solver, p);
   }
 } // namespace
 

@@ -186,6 +186,59 @@ namespace compax::dem::nonlocal_test
     return (Fp - Fm) / (2 * h);
   }
 
+  /// Options whose Algorithm 1 converges to @p tolerance (up to 100000
+  /// sweeps), so that finite differences of the residual are not lost in
+  /// the fixed point's own error.
+  inline NonlocalBedOptions
+  converged_fixed_point(const double tolerance, const bool nonlocal = true)
+  {
+    NonlocalBedOptions o;
+    o.nonlocal                   = nonlocal;
+    o.fixed_point_tolerance      = tolerance;
+    o.max_fixed_point_iterations = 100000;
+    return o;
+  }
+
+  /// A Jacobian check along one direction: the central difference fd of
+  /// the residual and K v.
+  struct JacobianProducts
+  {
+    Eigen::VectorXd fd;
+    Eigen::VectorXd Kv;
+  };
+
+  /// At the state where @p K was assembled, along a standard normal v
+  /// (seeded with @p seed): expects J v to equal the central difference
+  /// of the residual (step @p h) to 1e-6 of its norm, and K v as well
+  /// without the nonlocal terms (for Hertz the assembled K is the exact
+  /// Jacobian); returns that difference and K v. The system is evaluated
+  /// back at that state.
+  inline JacobianProducts
+  expect_jacobian_is_central_difference(NonlocalBedSystem       &system,
+                                        const BlockSparseMatrix &K,
+                                        const unsigned int       seed,
+                                        const double             h)
+  {
+    const bool            nonlocal = system.options().nonlocal;
+    std::mt19937          gen(seed);
+    const Eigen::VectorXd v = random_vector(gen, system.coordinates().size());
+    Eigen::VectorXd       Jv, F;
+    system.apply_jacobian(v, Jv);
+    JacobianProducts p;
+    p.fd = central_difference(system, v, h);
+    system.residual(F); // back to the state of K
+    EXPECT_LE((Jv - p.fd).norm(), 1e-6 * p.fd.norm())
+      << "nonlocal " << nonlocal << " seed " << seed;
+    p.Kv.resize(v.size());
+    K.vmult(p.Kv, v);
+    if (!nonlocal)
+      {
+        EXPECT_LE((p.Kv - p.fd).norm(), 1e-6 * p.fd.norm())
+          << "nonlocal " << nonlocal << " seed " << seed;
+      }
+    return p;
+  }
+
   /// Evaluates the system at its current state and expects both punches
   /// to carry P, to rel_tol P.
   inline void

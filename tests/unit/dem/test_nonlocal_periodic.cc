@@ -99,30 +99,17 @@ namespace
     for (const bool nonlocal : {false, true})
       for (unsigned int seed : {2u, 3u})
         {
-          Crystal            c = simple_cubic(R, 1.97 * R, 3e-3, 0.01, seed);
-          NonlocalBedOptions o;
-          o.nonlocal                   = nonlocal;
-          o.fixed_point_tolerance      = 1e-16;
-          o.max_fixed_point_iterations = 100000;
-          NonlocalBedSystem system(c.particles, two_materials, c.cell, o);
-          Eigen::VectorXd   F, Jv, Kv;
+          Crystal           c = simple_cubic(R, 1.97 * R, 3e-3, 0.01, seed);
+          NonlocalBedSystem system(c.particles,
+                                   two_materials,
+                                   c.cell,
+                                   converged_fixed_point(1e-16, nonlocal));
+          Eigen::VectorXd   F;
           BlockSparseMatrix K;
           system.assemble(F, K);
           ASSERT_TRUE(F.allFinite());
           ASSERT_GE(system.n_loaded(), 20u);
-          std::mt19937          gen(seed);
-          const Eigen::VectorXd v = random_vector(gen, 3 * c.particles.size());
-          system.apply_jacobian(v, Jv);
-          const Eigen::VectorXd fd = central_difference(system, v, 1e-8 * R);
-          system.residual(F);
-          EXPECT_LE((Jv - fd).norm(), 1e-6 * fd.norm())
-            << nonlocal << ' ' << seed;
-          if (!nonlocal)
-            {
-              Kv.resize(v.size());
-              K.vmult(Kv, v);
-              EXPECT_LE((Kv - fd).norm(), 1e-6 * fd.norm()) << seed;
-            }
+          expect_jacobian_is_central_difference(system, K, seed, 1e-8 * R);
         }
   }
 } // namespace

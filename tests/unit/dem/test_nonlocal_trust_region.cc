@@ -28,12 +28,10 @@ namespace
   {
     for (unsigned int seed : {1u, 2u, 5u, 7u})
       {
-        Cluster            c = make_cluster(seed);
-        NonlocalBedOptions o;
-        o.fixed_point_tolerance      = 1e-15;
-        o.max_fixed_point_iterations = 100000;
-        NonlocalBedSystem system(c.particles, two_materials, c.die, o);
-        Eigen::VectorXd   F, Hu, Hv, Ju;
+        Cluster                  c = make_cluster(seed);
+        const NonlocalBedOptions o = converged_fixed_point(1e-15);
+        NonlocalBedSystem        system(c.particles, two_materials, c.die, o);
+        Eigen::VectorXd          F, Hu, Hv, Ju;
         system.residual(F);
         ASSERT_TRUE(F.allFinite());
         std::mt19937          gen(seed);

@@ -63,6 +63,23 @@ namespace
     return h;
   }
 
+  /// Every contact of @p bed still has the a_p and a_B of @p before (the
+  /// histories taken before a failed sub-step).
+  void
+  expect_histories_unchanged(const PeriodicBed                 &bed,
+                             const std::vector<ContactHistory> &before)
+  {
+    const auto after = histories(bed);
+    ASSERT_EQ(after.size(), before.size());
+    for (std::size_t c = 0; c < after.size(); ++c)
+      {
+        EXPECT_EQ(BondedElastoplasticLaw::a_p(after[c]),
+                  BondedElastoplasticLaw::a_p(before[c]));
+        EXPECT_EQ(BondedElastoplasticLaw::a_B(after[c]),
+                  BondedElastoplasticLaw::a_B(before[c]));
+      }
+  }
+
   RveLoadingOptions
   options(const RveConsolidation consolidation)
   {
@@ -159,15 +176,7 @@ TEST(RveBondedPath, FailedSubstepLeavesHistoriesUntouched)
           EXPECT_FALSE(f.converged);
           EXPECT_GT(f.cutbacks, 0);
           EXPECT_EQ(copy.particles.positions, x);
-          const auto after = histories(copy);
-          ASSERT_EQ(after.size(), before.size());
-          for (std::size_t c = 0; c < after.size(); ++c)
-            {
-              EXPECT_EQ(BondedElastoplasticLaw::a_p(after[c]),
-                        BondedElastoplasticLaw::a_p(before[c]));
-              EXPECT_EQ(BondedElastoplasticLaw::a_B(after[c]),
-                        BondedElastoplasticLaw::a_B(before[c]));
-            }
+          ASSERT_NO_FATAL_FAILURE(expect_histories_unchanged(copy, before));
         }
     }
   ASSERT_TRUE(loose_with_history);
@@ -187,15 +196,7 @@ TEST(RveBondedPath, FailedSubstepLeavesHistoriesUntouched)
   const RveStepResult f = failing.apply_strain(bed, axial(-2e-2));
   EXPECT_FALSE(f.converged);
   EXPECT_EQ(bed.particles.positions, x);
-  const auto after = histories(bed);
-  ASSERT_EQ(after.size(), before.size());
-  for (std::size_t c = 0; c < after.size(); ++c)
-    {
-      EXPECT_EQ(BondedElastoplasticLaw::a_p(after[c]),
-                BondedElastoplasticLaw::a_p(before[c]));
-      EXPECT_EQ(BondedElastoplasticLaw::a_B(after[c]),
-                BondedElastoplasticLaw::a_B(before[c]));
-    }
+  ASSERT_NO_FATAL_FAILURE(expect_histories_unchanged(bed, before));
 }
 
 /// Once a converged state carried the jamming pressure the cell is a

@@ -31,10 +31,7 @@ namespace
     p.unloading_steps         = 4;
     p.ejection_displacement   = 1e-3;
     p.ejection_steps          = 4;
-    std::vector<fem::TabletStep> steps;
-    EXPECT_TRUE(fem::run_tablet_process<2>(
-      solver, p, [&](const fem::TabletStep &st) { steps.push_back(st); }));
-    return steps;
+    return compax::testing::recorded_cycle(solver, p);
   }
 } // namespace
 
