@@ -11,6 +11,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace compax::coupling
@@ -221,6 +222,21 @@ namespace compax::coupling
     std::map<std::string, Entry> attributes;
     std::set<std::string>        groups;
   };
+
+  /**
+   * Writes the archive @p path of @p identity atomically: @p fill writes
+   * its entries through the Hdf5ArchiveWriter it is given, then the archive
+   * is committed. If @p fill throws, nothing is committed and any previous
+   * archive at @p path stays as it was.
+   */
+  template <typename Fill>
+  void
+  write_archive(const std::string &path, ArchiveIdentity identity, Fill &&fill)
+  {
+    Hdf5ArchiveWriter archive(path, std::move(identity));
+    fill(archive);
+    archive.commit();
+  }
 
   /**
    * Reads an archive written by Hdf5ArchiveWriter. The constructor checks
