@@ -1,6 +1,7 @@
 #pragma once
 
 #include "io/content_hash.h"
+#include "io/file_error.h"
 
 #include <hdf5.h>
 
@@ -97,19 +98,10 @@ namespace compax::coupling
   /// Thrown for any archive problem (missing file, foreign or damaged file,
   /// missing or mis-sized entry). what() names the file; reason() is the
   /// problem alone, one line, for messages that name the file themselves.
-  class Hdf5ArchiveError : public std::runtime_error
+  class Hdf5ArchiveError : public io::FileError
   {
   public:
     Hdf5ArchiveError(const std::string &file, const std::string &reason);
-
-    const std::string &
-    reason() const
-    {
-      return why;
-    }
-
-  private:
-    std::string why;
   };
 
   namespace archive_detail
