@@ -1,6 +1,7 @@
 #include "coupling/bed_archive.h"
 
 #include "coupling/history_columns.h"
+#include "coupling/particle_archive.h"
 
 #include <stdexcept>
 
@@ -30,16 +31,7 @@ namespace compax::coupling
            const std::string &group,
            const dem::Bed    &bed)
   {
-    const auto         &p = bed.particles;
-    std::vector<double> x, radii(p.radii), materials;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      {
-        x.insert(x.end(), p.positions[i].data(), p.positions[i].data() + 3);
-        materials.push_back(p.materials[i]);
-      }
-    archive.write_array(group + "/positions", x, {p.size(), 3});
-    archive.write_array(group + "/radii", radii);
-    archive.write_array(group + "/materials", materials);
+    save_particles(archive, group, bed.particles);
     archive.write_array(group + "/walls",
                         {bed.walls.diameter,
                          bed.walls.lower_punch,
@@ -76,24 +68,14 @@ namespace compax::coupling
            const std::string       &group,
            const dem::ContactModel &model)
   {
-    dem::Bed   bed;
-    const auto x         = archive.read_array(group + "/positions");
-    const auto radii     = archive.read_array(group + "/radii");
-    const auto materials = archive.read_array(group + "/materials");
-    if (x.size() != 3 * radii.size() || materials.size() != radii.size())
-      throw std::runtime_error("checkpoint group '" + group
-                               + "': inconsistent particle arrays");
-    for (std::size_t i = 0; i < radii.size(); ++i)
-      {
-        if (!(materials[i] >= 0 && materials[i] < model.n_materials())
-            || !(radii[i] > 0))
-          throw std::runtime_error("checkpoint group '" + group
-                                   + "': a particle's material or radius is "
-                                     "not one of this contact model");
-        bed.particles.add({x[3 * i], x[3 * i + 1], x[3 * i + 2]},
-                          radii[i],
-                          static_cast<unsigned int>(materials[i]));
-      }
+    dem::Bed bed;
+    bed.particles = load_particles(archive,
+                                   group,
+                                   model,
+                                   "checkpoint group '" + group + "'",
+                                   "a particle's material or radius is not "
+                                   "one of this contact model");
+
     const auto walls      = archive.read_array(group + "/walls");
     bed.walls.diameter    = walls.at(0);
     bed.walls.lower_punch = walls.at(1);

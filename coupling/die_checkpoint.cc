@@ -173,42 +173,45 @@ namespace compax::coupling
                        const dem::DieProgress &progress,
                        const DieBranchFiles   &branch_files)
   {
-    Hdf5ArchiveWriter archive(file, {archive_kind::die_compaction, parameters});
-    archive.write_attribute("completed_targets",
-                            double(progress.completed_targets));
-    archive.write_attribute("branches_run", double(progress.branches_run));
-    archive.write_attribute("jamming_density", progress.jamming_density);
-    archive.write_attribute("relative_density", bed.relative_density());
-    archive.write_attribute("newton_iterations",
-                            double(progress.work.iterations));
-    archive.write_attribute("cg_iterations",
-                            double(progress.work.cg_iterations));
-    archive.write_attribute("assemblies", double(progress.work.assemblies));
-    archive.write_attribute("fire_iterations",
-                            double(progress.work.fire_iterations));
-    archive.write_attribute("rows", double(progress.rows.size()));
-    archive.write_attribute("branches", double(progress.branches.size()));
-    save_bed(archive, "bed", bed);
-    archive.write_array("compaction_targets", progress.compaction_targets);
+    write_archive(
+      file,
+      {archive_kind::die_compaction, parameters},
+      [&](Hdf5ArchiveWriter &archive) {
+        archive.write_attribute("completed_targets",
+                                double(progress.completed_targets));
+        archive.write_attribute("branches_run", double(progress.branches_run));
+        archive.write_attribute("jamming_density", progress.jamming_density);
+        archive.write_attribute("relative_density", bed.relative_density());
+        archive.write_attribute("newton_iterations",
+                                double(progress.work.iterations));
+        archive.write_attribute("cg_iterations",
+                                double(progress.work.cg_iterations));
+        archive.write_attribute("assemblies", double(progress.work.assemblies));
+        archive.write_attribute("fire_iterations",
+                                double(progress.work.fire_iterations));
+        archive.write_attribute("rows", double(progress.rows.size()));
+        archive.write_attribute("branches", double(progress.branches.size()));
+        save_bed(archive, "bed", bed);
+        archive.write_array("compaction_targets", progress.compaction_targets);
 
-    const std::size_t   n_fields = count_fields();
-    std::vector<double> rows;
-    for (const auto &r : progress.rows)
-      {
-        rows.push_back(stage_code(r.stage));
-        for_each_field(r, Pack{rows});
-      }
-    archive.write_array("rows", rows, {progress.rows.size(), n_fields});
+        const std::size_t   n_fields = count_fields();
+        std::vector<double> rows;
+        for (const auto &r : progress.rows)
+          {
+            rows.push_back(stage_code(r.stage));
+            for_each_field(r, Pack{rows});
+          }
+        archive.write_array("rows", rows, {progress.rows.size(), n_fields});
 
-    const std::size_t   n_summary = count_summary_fields();
-    std::vector<double> branches;
-    for (const auto &b : progress.branches)
-      for_each_summary_field(b, Pack{branches});
-    archive.write_array("branches",
-                        branches,
-                        {progress.branches.size(), n_summary});
-    save_branch_files(archive, "branch_files", branch_files);
-    archive.commit();
+        const std::size_t   n_summary = count_summary_fields();
+        std::vector<double> branches;
+        for (const auto &b : progress.branches)
+          for_each_summary_field(b, Pack{branches});
+        archive.write_array("branches",
+                            branches,
+                            {progress.branches.size(), n_summary});
+        save_branch_files(archive, "branch_files", branch_files);
+      });
   }
 
   DieCheckpoint

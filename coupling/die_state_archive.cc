@@ -13,11 +13,14 @@ namespace compax::coupling
                               const dem::Bed    &bed,
                               const int          branch)
   {
-    Hdf5ArchiveWriter archive(file, {archive_kind::die_branch, parameters});
-    archive.write_attribute("relative_density", bed.relative_density());
-    archive.write_attribute("branch", double(branch));
-    save_bed(archive, "bed", bed);
-    archive.commit();
+    write_archive(file,
+                  {archive_kind::die_branch, parameters},
+                  [&](Hdf5ArchiveWriter &archive) {
+                    archive.write_attribute("relative_density",
+                                            bed.relative_density());
+                    archive.write_attribute("branch", double(branch));
+                    save_bed(archive, "bed", bed);
+                  });
   }
 
   DieBranchState
@@ -38,9 +41,11 @@ namespace compax::coupling
                   const dem::Bed    &bed,
                   const std::string &failure)
   {
-    Hdf5ArchiveWriter archive(file, {archive_kind::die_state, parameters});
-    archive.write_attribute("failure", failure);
-    save_bed(archive, "bed", bed);
-    archive.commit();
+    write_archive(file,
+                  {archive_kind::die_state, parameters},
+                  [&](Hdf5ArchiveWriter &archive) {
+                    archive.write_attribute("failure", failure);
+                    save_bed(archive, "bed", bed);
+                  });
   }
 } // namespace compax::coupling

@@ -227,8 +227,7 @@ namespace compax::coupling
 
   Hdf5ArchiveError::Hdf5ArchiveError(const std::string &file,
                                      const std::string &reason)
-      : std::runtime_error("archive '" + file + "': " + reason)
-      , why(reason)
+      : io::FileError("archive", file, reason)
   {
   }
 

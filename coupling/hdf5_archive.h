@@ -1,6 +1,7 @@
 #pragma once
 
 #include "io/content_hash.h"
+#include "io/file_error.h"
 
 #include <hdf5.h>
 
@@ -11,6 +12,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace compax::coupling
@@ -96,19 +98,10 @@ namespace compax::coupling
   /// Thrown for any archive problem (missing file, foreign or damaged file,
   /// missing or mis-sized entry). what() names the file; reason() is the
   /// problem alone, one line, for messages that name the file themselves.
-  class Hdf5ArchiveError : public std::runtime_error
+  class Hdf5ArchiveError : public io::FileError
   {
   public:
     Hdf5ArchiveError(const std::string &file, const std::string &reason);
-
-    const std::string &
-    reason() const
-    {
-      return why;
-    }
-
-  private:
-    std::string why;
   };
 
   namespace archive_detail
@@ -221,6 +214,21 @@ namespace compax::coupling
     std::map<std::string, Entry> attributes;
     std::set<std::string>        groups;
   };
+
+  /**
+   * Writes the archive @p path of @p identity atomically: @p fill writes
+   * its entries through the Hdf5ArchiveWriter it is given, then the archive
+   * is committed. If @p fill throws, nothing is committed and any previous
+   * archive at @p path stays as it was.
+   */
+  template <typename Fill>
+  void
+  write_archive(const std::string &path, ArchiveIdentity identity, Fill &&fill)
+  {
+    Hdf5ArchiveWriter archive(path, std::move(identity));
+    fill(archive);
+    archive.commit();
+  }
 
   /**
    * Reads an archive written by Hdf5ArchiveWriter. The constructor checks

@@ -1,6 +1,7 @@
 #include "coupling/rve_archive.h"
 
 #include "coupling/history_columns.h"
+#include "coupling/particle_archive.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -43,18 +44,7 @@ namespace compax::coupling
            const std::string      &group,
            const dem::PeriodicBed &bed)
   {
-    const auto         &p = bed.particles;
-    std::vector<double> x, materials;
-    x.reserve(3 * p.size());
-    materials.reserve(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i)
-      {
-        x.insert(x.end(), p.positions[i].data(), p.positions[i].data() + 3);
-        materials.push_back(p.materials[i]);
-      }
-    archive.write_array(group + "/positions", x, {p.size(), 3});
-    archive.write_array(group + "/radii", p.radii);
-    archive.write_array(group + "/materials", materials);
+    save_particles(archive, group, bed.particles);
     archive.write_array(group + "/lattice",
                         flatten(bed.cell.lattice()),
                         {3, 3});
@@ -93,23 +83,13 @@ namespace compax::coupling
            const dem::ContactModel &model)
   {
     dem::PeriodicBed bed;
-    const auto       x         = archive.read_array(group + "/positions");
-    const auto       radii     = archive.read_array(group + "/radii");
-    const auto       materials = archive.read_array(group + "/materials");
-    if (x.size() != 3 * radii.size() || materials.size() != radii.size())
-      throw std::runtime_error("RVE archive group '" + group
-                               + "': inconsistent particle arrays");
-    for (std::size_t i = 0; i < radii.size(); ++i)
-      {
-        if (!(materials[i] >= 0 && materials[i] < model.n_materials())
-            || !(radii[i] > 0))
-          throw std::runtime_error(
-            "RVE archive group '" + group
-            + "': a particle's material or radius is not one of the "
-              "contact model");
-        const auto m = static_cast<unsigned int>(materials[i]);
-        bed.particles.add({x[3 * i], x[3 * i + 1], x[3 * i + 2]}, radii[i], m);
-      }
+    bed.particles = load_particles(archive,
+                                   group,
+                                   model,
+                                   "RVE archive group '" + group + "'",
+                                   "a particle's material or radius is not "
+                                   "one of the contact model");
+
     const auto periodic = archive.read_array(group + "/periodic");
     if (periodic.size() != 3)
       throw std::runtime_error("RVE archive group '" + group
@@ -129,7 +109,7 @@ namespace compax::coupling
     bed.contacts.set_skin(skin[0]);
 
     const auto        c = archive.read_array(group + "/contacts");
-    const std::size_t n = radii.size();
+    const std::size_t n = bed.particles.size();
     // Archives written before the laws declared their variables hold
     // eight columns (history_columns.h).
     const std::vector<hsize_t> shape = archive.array_shape(group + "/contacts");
@@ -177,9 +157,11 @@ namespace compax::coupling
            const dem::PeriodicBed &bed,
            const std::string      &parameters)
   {
-    Hdf5ArchiveWriter archive(path, {archive_kind::rve_state, parameters});
-    save_rve(archive, "rve", bed);
-    archive.commit();
+    write_archive(path,
+                  {archive_kind::rve_state, parameters},
+                  [&](Hdf5ArchiveWriter &archive) {
+                    save_rve(archive, "rve", bed);
+                  });
   }
 
   dem::PeriodicBed

@@ -151,10 +151,9 @@ namespace compax::coupling
                          const RveDatabase           &db,
                          const std::string           &parameters)
   {
-    Hdf5ArchiveWriter h5(file.string(),
-                         {archive_kind::rve_database, parameters});
-    write_database(h5, db);
-    h5.commit();
+    write_archive(file.string(),
+                  {archive_kind::rve_database, parameters},
+                  [&](Hdf5ArchiveWriter &h5) { write_database(h5, db); });
   }
 
   void
@@ -164,11 +163,12 @@ namespace compax::coupling
                             const dem::PeriodicBed      &bed)
   {
     std::filesystem::create_directories(file.parent_path());
-    Hdf5ArchiveWriter h5(file.string(),
-                         {archive_kind::database_checkpoint, parameters});
-    write_database(h5, db);
-    save_rve(h5, "rve", bed);
-    h5.commit();
+    write_archive(file.string(),
+                  {archive_kind::database_checkpoint, parameters},
+                  [&](Hdf5ArchiveWriter &h5) {
+                    write_database(h5, db);
+                    save_rve(h5, "rve", bed);
+                  });
   }
 
   DatabaseResume

@@ -20,18 +20,11 @@ namespace compax::coupling
     constexpr int voigt_i[6] = {0, 1, 2, 1, 0, 0};
     constexpr int voigt_j[6] = {0, 1, 2, 2, 2, 1};
 
+    /// A deal.II rank-2 tensor (Tensor or SymmetricTensor) as an Eigen
+    /// matrix.
+    template <typename Rank2Tensor>
     Eigen::Matrix3d
-    to_eigen(const dealii::Tensor<2, 3> &t)
-    {
-      Eigen::Matrix3d m;
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          m(i, j) = t[i][j];
-      return m;
-    }
-
-    Eigen::Matrix3d
-    to_eigen(const dealii::SymmetricTensor<2, 3> &t)
+    to_eigen(const Rank2Tensor &t)
     {
       Eigen::Matrix3d m;
       for (int i = 0; i < 3; ++i)

@@ -13,30 +13,64 @@
 
 namespace compax::fem
 {
+  namespace
+  {
+    /**
+     * Sizes @p matrix and assembles it from cell matrices: on every locally
+     * owned cell, @p add_cell_terms(fe_values, cell_matrix) adds the cell's
+     * integrals to the zeroed @p cell_matrix, with @p fe_values (QGauss of
+     * degree + 1, @p flags and the JxW values) reinitialised there. The
+     * cell matrices are distributed with @p constraints.
+     */
+    template <typename AddCellTerms>
+    void
+    assemble_cell_matrices(const FeSpace<2>                        &space,
+                           const dealii::UpdateFlags                flags,
+                           const dealii::AffineConstraints<double> &constraints,
+                           dealii::TrilinosWrappers::SparseMatrix  &matrix,
+                           AddCellTerms &&add_cell_terms)
+    {
+      space.reinit_matrix(matrix, constraints);
+      const dealii::FiniteElement<2>              &fe = space.fe();
+      const dealii::QGauss<2>                      quadrature(fe.degree + 1);
+      dealii::FEValues<2>                          fe_values(fe,
+                                    quadrature,
+                                    flags | dealii::update_JxW_values);
+      const unsigned int                           n = fe.n_dofs_per_cell();
+      dealii::FullMatrix<double>                   cell_matrix(n, n);
+      std::vector<dealii::types::global_dof_index> dof_indices(n);
+
+      for (const auto &cell : space.dof_handler().active_cell_iterators())
+        {
+          if (!cell->is_locally_owned())
+            continue;
+          fe_values.reinit(cell);
+          cell_matrix = 0.0;
+          add_cell_terms(fe_values, cell_matrix);
+          cell->get_dof_indices(dof_indices);
+          constraints.distribute_local_to_global(cell_matrix,
+                                                 dof_indices,
+                                                 matrix);
+        }
+      matrix.compress(dealii::VectorOperation::add);
+    }
+  } // namespace
+
   void
   assemble_axisymmetric_mass_matrix(
     const FeSpace<2>                        &space,
     const dealii::AffineConstraints<double> &constraints,
     dealii::TrilinosWrappers::SparseMatrix  &matrix)
   {
-    space.reinit_matrix(matrix, constraints);
-    const dealii::FiniteElement<2>              &fe = space.fe();
-    const dealii::QGauss<2>                      quadrature(fe.degree + 1);
-    dealii::FEValues<2>                          fe_values(fe,
-                                  quadrature,
-                                  dealii::update_values
-                                    | dealii::update_quadrature_points
-                                    | dealii::update_JxW_values);
-    const unsigned int                           n = fe.n_dofs_per_cell();
-    dealii::FullMatrix<double>                   cell_matrix(n, n);
-    std::vector<dealii::types::global_dof_index> dof_indices(n);
-
-    for (const auto &cell : space.dof_handler().active_cell_iterators())
-      {
-        if (!cell->is_locally_owned())
-          continue;
-        fe_values.reinit(cell);
-        cell_matrix = 0.0;
+    const dealii::FiniteElement<2> &fe = space.fe();
+    const unsigned int              n  = fe.n_dofs_per_cell();
+    assemble_cell_matrices(
+      space,
+      dealii::update_values | dealii::update_quadrature_points,
+      constraints,
+      matrix,
+      [&](const dealii::FEValues<2>  &fe_values,
+          dealii::FullMatrix<double> &cell_matrix) {
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             const double dV
@@ -51,12 +85,7 @@ namespace compax::fem
                                          * fe_values.shape_value(j, q) * dV;
               }
           }
-        cell->get_dof_indices(dof_indices);
-        constraints.distribute_local_to_global(cell_matrix,
-                                               dof_indices,
-                                               matrix);
-      }
-    matrix.compress(dealii::VectorOperation::add);
+      });
   }
 
   void
@@ -70,27 +99,18 @@ namespace compax::fem
     if (fe.n_components() != 2)
       throw std::invalid_argument(
         "axisymmetric elasticity needs a two-component (u_r, u_z) element");
-    space.reinit_matrix(matrix, constraints);
-    const dealii::QGauss<2>                      quadrature(fe.degree + 1);
-    dealii::FEValues<2>                          fe_values(fe,
-                                  quadrature,
-                                  dealii::update_values
-                                    | dealii::update_gradients
-                                    | dealii::update_quadrature_points
-                                    | dealii::update_JxW_values);
-    const dealii::FEValuesExtractors::Vector     displacement(0);
-    const unsigned int                           n = fe.n_dofs_per_cell();
-    dealii::FullMatrix<double>                   cell_matrix(n, n);
-    std::vector<dealii::types::global_dof_index> dof_indices(n);
-    std::vector<dealii::SymmetricTensor<2, 3>>   eps(n);
-    std::vector<dealii::SymmetricTensor<2, 3>>   C_eps(n);
-
-    for (const auto &cell : space.dof_handler().active_cell_iterators())
-      {
-        if (!cell->is_locally_owned())
-          continue;
-        fe_values.reinit(cell);
-        cell_matrix = 0.0;
+    const dealii::FEValuesExtractors::Vector   displacement(0);
+    const unsigned int                         n = fe.n_dofs_per_cell();
+    std::vector<dealii::SymmetricTensor<2, 3>> eps(n);
+    std::vector<dealii::SymmetricTensor<2, 3>> C_eps(n);
+    assemble_cell_matrices(
+      space,
+      dealii::update_values | dealii::update_gradients
+        | dealii::update_quadrature_points,
+      constraints,
+      matrix,
+      [&](const dealii::FEValues<2>  &fe_values,
+          dealii::FullMatrix<double> &cell_matrix) {
         for (const unsigned int q : fe_values.quadrature_point_indices())
           {
             const dealii::Point<2> &p = fe_values.quadrature_point(q);
@@ -107,12 +127,7 @@ namespace compax::fem
               for (unsigned int j = 0; j < n; ++j)
                 cell_matrix(i, j) += (eps[i] * C_eps[j]) * dV;
           }
-        cell->get_dof_indices(dof_indices);
-        constraints.distribute_local_to_global(cell_matrix,
-                                               dof_indices,
-                                               matrix);
-      }
-    matrix.compress(dealii::VectorOperation::add);
+      });
   }
 
   double

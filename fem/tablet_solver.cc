@@ -132,27 +132,23 @@ namespace compax::fem
 
     constraints.reinit(space->locally_relevant_dofs());
     const dealii::Functions::ZeroFunction<dim> zero(dim);
+    // Displacement component @p c vanishes on @p boundary (the axis of
+    // symmetry, or a symmetry plane of the 3-D quarter).
+    const auto fix_component
+      = [&](const dealii::types::boundary_id boundary, const unsigned int c) {
+          dealii::VectorTools::interpolate_boundary_values(
+            dofs,
+            boundary,
+            zero,
+            constraints,
+            fe.component_mask(dealii::FEValuesExtractors::Scalar(c)));
+        };
     if constexpr (dim == 2)
-      dealii::VectorTools::interpolate_boundary_values(
-        dofs,
-        axis,
-        zero,
-        constraints,
-        fe.component_mask(dealii::FEValuesExtractors::Scalar(0)));
+      fix_component(axis, 0);
     else
       {
-        dealii::VectorTools::interpolate_boundary_values(
-          dofs,
-          symmetry_x,
-          zero,
-          constraints,
-          fe.component_mask(dealii::FEValuesExtractors::Scalar(0)));
-        dealii::VectorTools::interpolate_boundary_values(
-          dofs,
-          symmetry_y,
-          zero,
-          constraints,
-          fe.component_mask(dealii::FEValuesExtractors::Scalar(1)));
+        fix_component(symmetry_x, 0);
+        fix_component(symmetry_y, 1);
       }
     constraints.close();
 

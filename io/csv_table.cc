@@ -40,8 +40,7 @@ namespace compax::io
   } // namespace
 
   CsvError::CsvError(const std::string &file, const std::string &reason)
-      : std::runtime_error("CSV file '" + file + "': " + reason)
-      , why(reason)
+      : FileError("CSV file", file, reason)
   {
   }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "io/file_error.h"
+
 #include <cstddef>
 #include <filesystem>
 #include <iosfwd>
@@ -15,19 +17,10 @@ namespace compax::io
    * without the file, for messages that name the file themselves (an
    * input entry and its value).
    */
-  class CsvError : public std::runtime_error
+  class CsvError : public FileError
   {
   public:
     CsvError(const std::string &file, const std::string &reason);
-
-    const std::string &
-    reason() const
-    {
-      return why;
-    }
-
-  private:
-    std::string why;
   };
 
   /**
