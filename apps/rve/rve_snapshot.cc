@@ -13,16 +13,17 @@ namespace compax::cli
     dem::ParticleSnapshot snapshot(p);
     for (const dem::PeriodicContact &c : bed.contacts.pairs)
       {
-        const Eigen::Vector3d d     = dem::branch_vector(p, bed.cell, c);
-        const double          gamma = p.radii[c.i] + p.radii[c.j] - d.norm();
-        const double          P
-          = dem::plastic_radius(c.law, c.history) == 0.0 && gamma <= 0.0
-              ? 0.0
-              : dem::periodic_contact_response(c,
-                                               gamma,
+        const dem::PeriodicContactGeometry g
+          = dem::contact_geometry(p, bed.cell, c);
+        const double P
+          = g.may_act
+              ? dem::periodic_contact_response(c,
+                                               g.overlap,
                                                dem::ContactBranch::current)
-                  .force;
-        snapshot.add_contact(c.i, c.j, d.normalized(), P, c.law, c.history);
+                  .force
+              : 0.0;
+        snapshot.add_contact(
+          c.i, c.j, g.branch / g.distance, P, c.law, c.history);
       }
     for (Eigen::Vector3d &x : snapshot.positions())
       bed.cell.wrap(x);

@@ -54,15 +54,14 @@ namespace compax::dem
     Eigen::Matrix3d       S = Eigen::Matrix3d::Zero();
     for (const PeriodicContact &c : bed.contacts.pairs)
       {
-        const Eigen::Vector3d d     = branch_vector(p, bed.cell, c);
-        const double          dist  = d.norm();
-        const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
-        if (plastic_radius(c.law, c.history) == 0.0 && gamma <= 0.0)
+        const PeriodicContactGeometry g = contact_geometry(p, bed.cell, c);
+        if (!g.may_act)
           continue;
         const double force
-          = periodic_contact_response(c, gamma, ContactBranch::current).force;
+          = periodic_contact_response(c, g.overlap, ContactBranch::current)
+              .force;
         if (force != 0.0)
-          S.noalias() -= (force / dist) * d * d.transpose();
+          S.noalias() -= (force / g.distance) * g.branch * g.branch.transpose();
       }
     return S / bed.cell.volume();
   }
@@ -85,17 +84,17 @@ namespace compax::dem
       E[b] = unit_strain(b);
     for (const PeriodicContact &c : bed.contacts.pairs)
       {
-        const Eigen::Vector3d d     = branch_vector(p, bed.cell, c);
-        const double          dist  = d.norm();
-        const double          gamma = p.radii[c.i] + p.radii[c.j] - dist;
-        if (plastic_radius(c.law, c.history) == 0.0 && gamma <= 0.0)
+        const PeriodicContactGeometry at = contact_geometry(p, bed.cell, c);
+        if (!at.may_act)
           continue;
-        const ContactResponse r = periodic_contact_response(c, gamma, branch);
+        const ContactResponse r
+          = periodic_contact_response(c, at.overlap, branch);
         if (r.force == 0.0 && r.stiffness == 0.0)
           continue;
-        const Eigen::Vector3d n = d / dist;
-        const Eigen::Matrix3d k = PairBlock(r, dist).matrix(n);
-        const Eigen::Vector3d g = -r.force * n;
+        const Eigen::Vector3d &d = at.branch;
+        const Eigen::Vector3d  n = d / at.distance;
+        const Eigen::Matrix3d  k = PairBlock(r, at.distance).matrix(n);
+        const Eigen::Vector3d  g = -r.force * n;
         for (int b = 0; b < 6; ++b)
           {
             const Eigen::Vector3d dd = E[b] * d;

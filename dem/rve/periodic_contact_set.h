@@ -45,6 +45,33 @@ namespace compax::dem
     return p.radii[c.i] + p.radii[c.j] - branch_vector(p, cell, c).norm();
   }
 
+  /// Where a periodic contact stands at the current positions.
+  struct PeriodicContactGeometry
+  {
+    /// Branch vector d = x_i - (x_j + H n) [m], its length [m] and the
+    /// overlap gamma = R_i + R_j - |d| [m].
+    Eigen::Vector3d branch;
+    double          distance;
+    double          overlap;
+    /// False for a virgin contact (no internal variables) that is apart:
+    /// no law gives it a force, as the assembler assumes (pair_terms.h). A
+    /// contact with a history may act apart (a solid bridge, adhesion).
+    bool may_act;
+  };
+
+  inline PeriodicContactGeometry
+  contact_geometry(const ParticleSystem  &p,
+                   const PeriodicCell    &cell,
+                   const PeriodicContact &c)
+  {
+    PeriodicContactGeometry g;
+    g.branch   = branch_vector(p, cell, c);
+    g.distance = g.branch.norm();
+    g.overlap  = p.radii[c.i] + p.radii[c.j] - g.distance;
+    g.may_act  = g.overlap > 0.0 || has_history(c.history);
+    return g;
+  }
+
   /**
    * The candidate contacts of a periodic cell, pairs through lattice
    * images, as a VerletList. The list is rebuilt when the particles'

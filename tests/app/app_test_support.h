@@ -224,6 +224,20 @@ namespace compax::testing
     }
   };
 
+  /// Every command that reads a parameter file, in the order of
+  /// `compax --help` (docs takes none).
+  inline const std::vector<std::string> parameter_commands{"contact",
+                                                           "die",
+                                                           "jamming",
+                                                           "crystal",
+                                                           "mcdem",
+                                                           "calibrate",
+                                                           "tablet",
+                                                           "rve",
+                                                           "database",
+                                                           "bed",
+                                                           "compare"};
+
   /// A die study of a few seconds: 60 particles in a 2 mm die, 7
   /// compaction targets with the unloading points 0.62 (target 5) and 0.7
   /// (target 7), checkpoints after targets 2, 4 and 6.

@@ -18,17 +18,7 @@ TEST_F(DocsCommand, EveryPrintedEntryOfEveryCommandIsDocumented)
   const auto r = compax("docs -o out");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string md = read(folder / "out" / "parameters.md");
-  for (const std::string command : {"contact",
-                                    "die",
-                                    "jamming",
-                                    "crystal",
-                                    "mcdem",
-                                    "calibrate",
-                                    "tablet",
-                                    "rve",
-                                    "database",
-                                    "bed",
-                                    "compare"})
+  for (const std::string &command : parameter_commands)
     {
       EXPECT_NE(md.find("## compax " + command + "\n"), std::string::npos)
         << command;
