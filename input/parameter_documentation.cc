@@ -60,6 +60,13 @@ namespace compax::input
             options.pop_back();
           return "one of " + options;
         }
+      if (d.rfind("[MultipleSelection ", 0) == 0)
+        {
+          std::string options = d.substr(19, d.size() - 20);
+          while (!options.empty() && options.back() == ' ')
+            options.pop_back();
+          return "a comma-separated list of any of " + options;
+        }
       if (d.rfind("[List of <", 0) == 0)
         {
           const auto close = d.rfind("> of length ");

@@ -172,16 +172,7 @@ TEST_F(InputMessages, CheckOpensTheFilesTheParametersName)
 
 TEST_F(InputMessages, PrintParametersShowsWhatEveryEntryAllows)
 {
-  for (const std::string command : {"contact",
-                                    "die",
-                                    "crystal",
-                                    "mcdem",
-                                    "calibrate",
-                                    "tablet",
-                                    "rve",
-                                    "database",
-                                    "bed",
-                                    "compare"})
+  for (const std::string &command : compax::testing::parameter_commands)
     {
       const auto r = compax(command + " --print-parameters");
       ASSERT_EQ(r.exit_code, 0) << command;
