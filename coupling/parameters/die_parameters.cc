@@ -236,7 +236,8 @@ namespace compax::coupling
       "Unjammed equilibrium",
       "balanced-lbfgs",
       dealii::Patterns::Selection(
-        "relaxation|relaxation+newton|balanced-relaxation|balanced-lbfgs"),
+        "relaxation|relaxation+newton|balanced-relaxation|"
+        "balanced-lbfgs|least-squares"),
       "Bonded path (Consolidation = none) only: the converged state of a "
       "step while the punches carry less than 0.5 MPa. relaxation: the FIRE "
       "relaxation at fixed internal variables, balanced to 1e-2 of the mean "
@@ -255,7 +256,17 @@ namespace compax::coupling
       "(default): the same problem and tolerances, minimised by L-BFGS "
       "instead of FIRE (3.6x fewer residual evaluations and 7x less time "
       "to rho = 0.70 on the 6512-sphere Material 1 bed, 1.7x on 2000 "
-      "spheres; see README, The loose regime).");
+      "spheres; see README, The loose regime). least-squares: no "
+      "relaxation; Gonzalez 2018 Algorithm 1 as printed, a trust region on "
+      "the least-squares problem min |F|^2 whose step solves the "
+      "Gauss-Newton model, converged when the step moves no particle "
+      "farther than Solver/Step tolerance (Error = |s| < TOL1) or when "
+      "balanced; a loose bed's net forces along its mechanisms are out of "
+      "that model's reach, so its converged states may keep force chains "
+      "(die.csv's residual shows the imbalance left). Gauss-Newton "
+      "converges slowly where the residual does not vanish: raise "
+      "Solver/Maximum iterations (2000 for the 1500-sphere beds of the "
+      "README's measurement).");
     declare_history_update(prm,
                            "1e-2 x 0.5 MPa on a mean cross-section pi R^2, "
                            "7.6e-4 N for R = 220 um");

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace compax::dem
 {
@@ -32,6 +33,13 @@ namespace compax::dem
       , opts(options)
       , newton(options.equilibrium)
   {
+    // Measured at stop 33: Gauss-Newton loose steps in a periodic cell
+    // were cut back without end (a 60-sphere cell did not pack in 5 min).
+    if (opts.unjammed_equilibrium == UnjammedEquilibrium::least_squares)
+      throw std::invalid_argument(
+        "RVE loading: unjammed equilibrium 'least-squares' (Algorithm 1 as "
+        "printed) is the die's option only; use balanced-lbfgs, "
+        "balanced-relaxation, relaxation+newton or relaxation");
   }
 
   double

@@ -56,7 +56,8 @@ namespace compax::dem
     /// equilibrium options' force tolerance, or below force_tolerance times
     /// a particle's share of the jamming pressure, within
     /// balanced_iterations (balanced_relaxation; balanced_lbfgs, the
-    /// default, minimises by L-BFGS instead of FIRE).
+    /// default, minimises by L-BFGS instead of FIRE). least_squares is the
+    /// die's only: the constructor refuses it.
     UnjammedEquilibrium unjammed_equilibrium
       = UnjammedEquilibrium::balanced_lbfgs;
     /// FIRE iterations, or L-BFGS residual evaluations, allowed per

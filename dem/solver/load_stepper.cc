@@ -24,6 +24,7 @@ namespace compax::dem
                            const LoadSteppingOptions stepping)
       : model(model)
       , newton(equilibrium)
+      , least_squares(equilibrium)
       , stepping(stepping)
   {
   }
@@ -70,6 +71,13 @@ namespace compax::dem
   {
     // A balanced relaxation stops where Newton would: at the relative force
     // tolerance or below the absolute force floor.
+    if (stepping.unjammed_equilibrium == UnjammedEquilibrium::least_squares)
+      {
+        // Algorithm 1 as printed: converged where the step vanishes.
+        const EquilibriumResult r = least_squares.solve(bed, model);
+        accumulate(total, r);
+        return as_relaxation(r);
+      }
     const bool lbfgs_minimiser
       = stepping.unjammed_equilibrium == UnjammedEquilibrium::balanced_lbfgs;
     const EquilibriumOptions &eq = newton.options();

@@ -3,6 +3,7 @@
 #include "dem/solver/bed.h"
 #include "dem/solver/fire_relaxation.h"
 #include "dem/solver/lbfgs_relaxation.h"
+#include "dem/solver/least_squares_trust_region.h"
 #include "dem/solver/trust_region_newton.h"
 #include "dem/solver/unjammed_equilibrium.h"
 
@@ -58,7 +59,10 @@ namespace compax::dem
      *   sub-step's state; a Newton solve that fails cuts the sub-step back;
      * - balanced_relaxation: the relaxation runs to EquilibriumOptions'
      *   force tolerance or force floor within balanced_iterations; one that
-     *   does not get there cuts the sub-step back.
+     *   does not get there cuts the sub-step back;
+     * - least_squares: no relaxation; LeastSquaresTrustRegion (Algorithm
+     *   1 as printed) to its step tolerance, a state that need not be
+     *   balanced; one that does not converge cuts the sub-step back.
      */
     UnjammedEquilibrium unjammed_equilibrium = UnjammedEquilibrium::relaxation;
     /// FIRE iterations allowed per unjammed relaxation.
@@ -216,12 +220,13 @@ namespace compax::dem
     void
     predict(Bed &bed, const DieWalls &next);
 
-    const ContactModel &model;
-    TrustRegionNewton   newton;
-    FireRelaxation      fire;
-    LbfgsRelaxation     lbfgs;
-    LoadSteppingOptions stepping;
-    double              fraction = 1.0;
+    const ContactModel     &model;
+    TrustRegionNewton       newton;
+    LeastSquaresTrustRegion least_squares;
+    FireRelaxation          fire;
+    LbfgsRelaxation         lbfgs;
+    LoadSteppingOptions     stepping;
+    double                  fraction = 1.0;
     /// Whether the bed is still unjammed; -1: not known yet.
     int loose = -1;
     /// Whether the last sub-step was relax_coming_apart()'s: the next ones

@@ -2,6 +2,7 @@
 
 #include "dem/solver/die_bed_system.h"
 #include "dem/solver/step_limits.h"
+#include "dem/wall_clock.h"
 
 #include <algorithm>
 #include <chrono>
@@ -12,16 +13,7 @@
 
 namespace compax::dem
 {
-  namespace
-  {
-    using clock_type = std::chrono::steady_clock;
-
-    double
-    seconds_since(const clock_type::time_point t0)
-    {
-      return std::chrono::duration<double>(clock_type::now() - t0).count();
-    }
-  } // namespace
+  using clock_type = std::chrono::steady_clock;
 
   TrustRegionNewton::TrustRegionNewton(const EquilibriumOptions  options,
                                        const NewtonKrylovOptions krylov)

@@ -17,6 +17,8 @@ namespace compax::dem
           return "balanced-relaxation";
         case UnjammedEquilibrium::balanced_lbfgs:
           return "balanced-lbfgs";
+        case UnjammedEquilibrium::least_squares:
+          return "least-squares";
       }
     return "relaxation";
   }
@@ -27,12 +29,13 @@ namespace compax::dem
     for (const auto e : {UnjammedEquilibrium::relaxation,
                          UnjammedEquilibrium::relaxation_then_newton,
                          UnjammedEquilibrium::balanced_relaxation,
-                         UnjammedEquilibrium::balanced_lbfgs})
+                         UnjammedEquilibrium::balanced_lbfgs,
+                         UnjammedEquilibrium::least_squares})
       if (unjammed_equilibrium_name(e) == name)
         return e;
     throw std::invalid_argument(
       "unjammed equilibrium '" + name
       + "' is not one of relaxation, relaxation+newton, balanced-relaxation, "
-        "balanced-lbfgs");
+        "balanced-lbfgs, least-squares");
   }
 } // namespace compax::dem

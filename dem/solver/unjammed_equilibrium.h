@@ -7,10 +7,10 @@ namespace compax::dem
   /**
    * What counts as the converged state of a load step while the bed (or
    * cell) is unjammed, on the bonded path. Below jamming the trust-region
-   * Newton has no stiffness along the bed's mechanisms, so every variant
-   * starts with a FIRE relaxation at fixed internal variables; they differ
-   * in when the relaxation may stop, which decides whether force chains
-   * that a balanced loose bed does not carry reach Eq. (13).
+   * Newton has no stiffness along the bed's mechanisms, so the variants
+   * but the last start with a relaxation at fixed internal variables; they
+   * differ in when the relaxation may stop, which decides whether force
+   * chains that a balanced loose bed does not carry reach Eq. (13).
    */
   enum class UnjammedEquilibrium
   {
@@ -33,11 +33,18 @@ namespace compax::dem
     /// As balanced_relaxation, with the relaxation done by L-BFGS
     /// (LbfgsRelaxation) instead of FIRE: the same fixed-history problem
     /// and the same tolerances, another minimiser.
-    balanced_lbfgs
+    balanced_lbfgs,
+    /// No relaxation: Gonzalez 2018 Algorithm 1 as printed
+    /// (LeastSquaresTrustRegion), a Gauss-Newton trust region on |F|^2
+    /// that stops when its step is shorter than the step tolerance. A
+    /// loose bed's net forces along its mechanisms are out of that model's
+    /// reach, so its converged states may keep force chains that the
+    /// energy minimisers relax.
+    least_squares
   };
 
-  /// "relaxation", "relaxation+newton", "balanced-relaxation" or
-  /// "balanced-lbfgs".
+  /// "relaxation", "relaxation+newton", "balanced-relaxation",
+  /// "balanced-lbfgs" or "least-squares".
   std::string
   unjammed_equilibrium_name(UnjammedEquilibrium e);
 

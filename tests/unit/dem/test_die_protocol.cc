@@ -204,3 +204,52 @@ TEST(DieProtocol, BalancedLbfgsBalancesLooseStatesToTheSolverTolerance)
        expect_loose_states_balanced(UnjammedEquilibrium::balanced_lbfgs))
     EXPECT_EQ(relaxed, 1);
 }
+
+/// Algorithm 1 as printed (UnjammedEquilibrium::least_squares): the loose
+/// steps stop where the Gauss-Newton step on |F|^2 vanishes, balanced or
+/// not, yet the path reaches the first state whose punches carry 0.5 MPa,
+/// and from there on every state is Newton's, balanced to the solver
+/// tolerance. At every state the punch forces differ by no more than the
+/// particles' summed residual (frictionless die wall: radial forces only).
+TEST(DieProtocol, LeastSquaresPathBalancesEveryJammedState)
+{
+  const Bed          bed   = deposit(150, 3);
+  const ContactModel model = material1();
+  DieProtocol        protocol;
+  protocol.compaction_targets
+    = density_targets(bed.relative_density(), 0.7, 15);
+  protocol.eject                = false;
+  protocol.unjammed_equilibrium = UnjammedEquilibrium::least_squares;
+  DieCompaction die(bed, model, protocol);
+  ASSERT_NO_THROW(die.run());
+  const double jamming      = 0.5e6;
+  const double tol          = EquilibriumOptions{}.force_tolerance;
+  const double N            = static_cast<double>(bed.particles.size());
+  double       first_jammed = 0.0;
+  int          jammed = 0, loose = 0;
+  for (const DieRecord &r : die.records())
+    {
+      if (r.step == 0)
+        continue;
+      // Every state, loose or not: the pair forces cancel in the sum of
+      // the particles' residuals, which leaves F_u - F_l.
+      EXPECT_LE(std::abs(r.upper_punch_force - r.lower_punch_force),
+                N * r.residual * r.mean_contact_force
+                  + 1e-12 * std::abs(r.upper_punch_force))
+        << r.step;
+      const bool below
+        = std::max(r.upper_punch_pressure, r.lower_punch_pressure) < jamming;
+      if (below && first_jammed == 0.0)
+        {
+          ++loose;
+          continue;
+        }
+      if (first_jammed == 0.0)
+        first_jammed = r.relative_density;
+      ++jammed;
+      EXPECT_LE(r.residual, tol) << r.step;
+    }
+  EXPECT_GT(loose, 2);
+  EXPECT_GT(jammed, 2);
+  EXPECT_EQ(die.jamming_density(), first_jammed);
+}

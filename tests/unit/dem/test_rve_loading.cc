@@ -87,3 +87,21 @@ TEST(RveLoading, UniaxialStrainCompactsAndJams)
             loading.options().equilibrium.force_tolerance * sums.mean_force
               * 1.0000001);
 }
+
+/// The die's least-squares loose path (Algorithm 1 as printed) is not
+/// offered for the periodic cell: the loading refuses it by name.
+TEST(RveLoading, RefusesTheDiesLeastSquaresLoosePath)
+{
+  const ContactModel model = material1::contact_model();
+  RveLoadingOptions  options;
+  options.unjammed_equilibrium = UnjammedEquilibrium::least_squares;
+  try
+    {
+      RveLoading loading(model, options);
+      ADD_FAILURE() << "least-squares accepted";
+    }
+  catch (const std::invalid_argument &e)
+    {
+      EXPECT_NE(std::string(e.what()).find("least-squares"), std::string::npos);
+    }
+}

@@ -1,4 +1,5 @@
 #include "dem/solver/lbfgs_relaxation.h"
+#include "dem/solver/least_squares_trust_region.h"
 #include "dem/solver/load_stepper.h"
 #include "tests/support/gonzalez_material1.h"
 
@@ -229,6 +230,52 @@ TEST(SolverEquilibrium, LbfgsRelaxesAColumnToTheClosedForm)
   const double P = 0.5 * (lo + hi);
   ContactSums  sums;
   EXPECT_LT(net_force_check(bed, model, sums), tolerance);
+  EXPECT_NEAR(sums.wall_force[int(Wall::upper_punch)], P, 1e-7 * P);
+  EXPECT_NEAR(sums.wall_force[int(Wall::lower_punch)], P, 1e-7 * P);
+  EXPECT_NEAR(bed.particles.positions[0][2],
+              R - sphere_flat.overlap(P),
+              1e-8 * R);
+  EXPECT_EQ(bed.particles.positions[N], rattler);
+}
+
+/// Algorithm 1 of Gonzalez 2018 as printed (the Gauss-Newton trust region
+/// on |F|^2) balances the same unrelaxed column to the closed form of the
+/// L-BFGS test: the column's stiffness is not singular along its net
+/// forces, so the stationary point of |F|^2 is the equilibrium. The
+/// rattler, without stiffness or force, is not moved.
+TEST(SolverEquilibrium, LeastSquaresSolvesAColumnToTheClosedForm)
+{
+  const ContactModel model = compax::testing::material1::contact_model();
+  const int          N     = 6;
+  const double       total = 0.2 * R;
+  Bed                bed;
+  bed.walls.diameter    = 12 * R;
+  bed.walls.upper_punch = 2 * R * N - total;
+  bed.contacts.set_skin(0.3 * R);
+  for (int k = 0; k < N; ++k)
+    bed.particles.add({0.0, 0.0, R + 2 * R * k}, R);
+  const Eigen::Vector3d rattler(4 * R, 0.0, 3 * R);
+  bed.particles.add(rattler, R);
+
+  EquilibriumOptions options;
+  options.force_tolerance = 1e-9;
+  options.step_tolerance  = 1e-12;
+  LeastSquaresTrustRegion solver(options);
+  const EquilibriumResult r = solver.solve(bed, model);
+  ASSERT_TRUE(r.converged) << r.iterations << " iterations, residual "
+                           << r.relative_residual;
+  double lo = 0.0, hi = sphere_flat.force(total);
+  for (int i = 0; i < 200; ++i)
+    {
+      const double P = 0.5 * (lo + hi);
+      (2 * sphere_flat.overlap(P) + (N - 1) * sphere_sphere.overlap(P) < total
+         ? lo
+         : hi)
+        = P;
+    }
+  const double P = 0.5 * (lo + hi);
+  ContactSums  sums;
+  EXPECT_LT(net_force_check(bed, model, sums), options.force_tolerance);
   EXPECT_NEAR(sums.wall_force[int(Wall::upper_punch)], P, 1e-7 * P);
   EXPECT_NEAR(sums.wall_force[int(Wall::lower_punch)], P, 1e-7 * P);
   EXPECT_NEAR(bed.particles.positions[0][2],
