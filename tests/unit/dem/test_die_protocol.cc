@@ -130,6 +130,19 @@ TEST(DieProtocol, ProgressLeavesTheCallersStreamFormat)
 
 namespace
 {
+  /// The loose-path study of these tests: @p bed compacted to 0.7 in 15
+  /// steps, without ejection, through the given unjammed equilibrium.
+  DieProtocol
+  loose_path_protocol(const Bed &bed, const UnjammedEquilibrium unjammed)
+  {
+    DieProtocol protocol;
+    protocol.compaction_targets
+      = density_targets(bed.relative_density(), 0.7, 15);
+    protocol.eject                = false;
+    protocol.unjammed_equilibrium = unjammed;
+    return protocol;
+  }
+
   /**
    * Compacts a small bed of Material 1 along the bonded path with the given
    * unjammed equilibrium and checks that every state, loose ones included,
@@ -144,12 +157,7 @@ namespace
   {
     const Bed          bed   = deposit(150, 3);
     const ContactModel model = material1();
-    DieProtocol        protocol;
-    protocol.compaction_targets
-      = density_targets(bed.relative_density(), 0.7, 15);
-    protocol.eject                = false;
-    protocol.unjammed_equilibrium = unjammed;
-    DieCompaction die(bed, model, protocol);
+    DieCompaction      die(bed, model, loose_path_protocol(bed, unjammed));
     EXPECT_NO_THROW(die.run());
     const double jamming = 0.5e6;
     const double tol     = EquilibriumOptions{}.force_tolerance;
@@ -215,12 +223,8 @@ TEST(DieProtocol, LeastSquaresPathBalancesEveryJammedState)
 {
   const Bed          bed   = deposit(150, 3);
   const ContactModel model = material1();
-  DieProtocol        protocol;
-  protocol.compaction_targets
-    = density_targets(bed.relative_density(), 0.7, 15);
-  protocol.eject                = false;
-  protocol.unjammed_equilibrium = UnjammedEquilibrium::least_squares;
-  DieCompaction die(bed, model, protocol);
+  DieCompaction      die(
+    bed, model, loose_path_protocol(bed, UnjammedEquilibrium::least_squares));
   ASSERT_NO_THROW(die.run());
   const double jamming      = 0.5e6;
   const double tol          = EquilibriumOptions{}.force_tolerance;

@@ -55,6 +55,65 @@ namespace
     sums = a.residual(bed, model, F);
     return max_particle_norm(F) / sums.mean_force;
   }
+
+  /// Where the rattler of the column tests sits, away from the column.
+  const Eigen::Vector3d column_rattler(4 * R, 0.0, 3 * R);
+
+  /// N spheres in a simple-cubic column between the punches, touching,
+  /// with the upper punch lowered by @p squeeze (so that all of it sits in
+  /// the top contact), and a rattler at column_rattler.
+  Bed
+  column_with_rattler(const int N, const double squeeze)
+  {
+    Bed bed;
+    bed.walls.diameter    = 12 * R;
+    bed.walls.upper_punch = 2 * R * N - squeeze;
+    bed.contacts.set_skin(0.3 * R);
+    for (int k = 0; k < N; ++k)
+      bed.particles.add({0.0, 0.0, R + 2 * R * k}, R);
+    bed.particles.add(column_rattler, R);
+    return bed;
+  }
+
+  /// The one force P through the N + 1 contacts in series of a column
+  /// squeezed by @p total: 2 gamma_sf(P) + (N-1) gamma_ss(P) = total
+  /// (bisection).
+  double
+  column_force(const int N, const double total)
+  {
+    double lo = 0.0, hi = sphere_flat.force(total);
+    for (int i = 0; i < 200; ++i)
+      {
+        const double P = 0.5 * (lo + hi);
+        (2 * sphere_flat.overlap(P) + (N - 1) * sphere_sphere.overlap(P) < total
+           ? lo
+           : hi)
+          = P;
+      }
+    return 0.5 * (lo + hi);
+  }
+
+  /// The column of column_with_rattler(N, total) solved at fixed (virgin)
+  /// internal variables: balanced to @p tolerance, the punches carry
+  /// column_force(N, total), the bottom sphere sits on its sphere-flat
+  /// overlap, and the rattler, without a contact, has not moved.
+  void
+  expect_column_closed_form(Bed                &bed,
+                            const ContactModel &model,
+                            const int           N,
+                            const double        total,
+                            const double        tolerance)
+  {
+    const double P = column_force(N, total);
+    ContactSums  sums;
+    EXPECT_LT(net_force_check(bed, model, sums), tolerance);
+    EXPECT_NEAR(sums.wall_force[int(Wall::upper_punch)], P, 1e-7 * P);
+    EXPECT_NEAR(sums.wall_force[int(Wall::lower_punch)], P, 1e-7 * P);
+    EXPECT_NEAR(bed.particles.positions[0][2],
+                R - sphere_flat.overlap(P),
+                1e-8 * R);
+    EXPECT_EQ(bed.particles.positions[N], column_rattler);
+  }
 } // namespace
 
 /// One sphere between two punches: two identical sphere-flat contacts in
@@ -150,15 +209,8 @@ TEST(SolverEquilibrium, SimpleCubicColumnAndRattler)
 {
   const ContactModel model = compax::testing::material1::contact_model();
   const int          N     = 6;
-  Bed                bed;
-  bed.walls.diameter    = 12 * R;
-  bed.walls.upper_punch = 2 * R * N;
-  bed.contacts.set_skin(0.3 * R);
-  for (int k = 0; k < N; ++k)
-    bed.particles.add({0.0, 0.0, R + 2 * R * k}, R);
-  const Eigen::Vector3d rattler(4 * R, 0.0, 3 * R);
-  bed.particles.add(rattler, R);
-  LoadStepper stepper(model);
+  Bed                bed   = column_with_rattler(N, 0.0);
+  LoadStepper        stepper(model);
 
   for (const double total : {0.05 * R, 0.2 * R, 0.5 * R})
     {
@@ -166,17 +218,7 @@ TEST(SolverEquilibrium, SimpleCubicColumnAndRattler)
       w.upper_punch = 2 * R * N - total;
       const auto r  = stepper.advance(bed, w);
       ASSERT_TRUE(r.converged);
-      double lo = 0.0, hi = sphere_flat.force(total);
-      for (int i = 0; i < 200; ++i)
-        {
-          const double P = 0.5 * (lo + hi);
-          (2 * sphere_flat.overlap(P) + (N - 1) * sphere_sphere.overlap(P)
-               < total
-             ? lo
-             : hi)
-            = P;
-        }
-      const double P = 0.5 * (lo + hi);
+      const double P = column_force(N, total);
       ContactSums  sums;
       EXPECT_LT(net_force_check(bed, model, sums), 1e-6);
       EXPECT_NEAR(sums.wall_force[int(Wall::upper_punch)], P, 1e-7 * P);
@@ -186,9 +228,9 @@ TEST(SolverEquilibrium, SimpleCubicColumnAndRattler)
                   1e-9 * R);
       // The rattler carries no force and keeps where the affine predictor
       // of the punch motion put it.
-      const Eigen::Vector3d moved(rattler[0],
-                                  rattler[1],
-                                  rattler[2] * w.height() / (2 * R * N));
+      const Eigen::Vector3d moved(column_rattler[0],
+                                  column_rattler[1],
+                                  column_rattler[2] * w.height() / (2 * R * N));
       EXPECT_LT((bed.particles.positions[N] - moved).norm(), 1e-12 * R);
     }
 }
@@ -204,38 +246,14 @@ TEST(SolverEquilibrium, LbfgsRelaxesAColumnToTheClosedForm)
   const ContactModel model = compax::testing::material1::contact_model();
   const int          N     = 6;
   const double       total = 0.2 * R;
-  Bed                bed;
-  bed.walls.diameter    = 12 * R;
-  bed.walls.upper_punch = 2 * R * N - total;
-  bed.contacts.set_skin(0.3 * R);
-  for (int k = 0; k < N; ++k)
-    bed.particles.add({0.0, 0.0, R + 2 * R * k}, R);
-  const Eigen::Vector3d rattler(4 * R, 0.0, 3 * R);
-  bed.particles.add(rattler, R);
+  Bed                bed   = column_with_rattler(N, total);
 
   LbfgsRelaxation  lbfgs;
   const double     tolerance = 1e-9;
   const FireResult r         = lbfgs.relax(bed, model, tolerance, 100000);
   ASSERT_TRUE(r.converged) << r.iterations << " evaluations, residual "
                            << r.relative_residual;
-  double lo = 0.0, hi = sphere_flat.force(total);
-  for (int i = 0; i < 200; ++i)
-    {
-      const double P = 0.5 * (lo + hi);
-      (2 * sphere_flat.overlap(P) + (N - 1) * sphere_sphere.overlap(P) < total
-         ? lo
-         : hi)
-        = P;
-    }
-  const double P = 0.5 * (lo + hi);
-  ContactSums  sums;
-  EXPECT_LT(net_force_check(bed, model, sums), tolerance);
-  EXPECT_NEAR(sums.wall_force[int(Wall::upper_punch)], P, 1e-7 * P);
-  EXPECT_NEAR(sums.wall_force[int(Wall::lower_punch)], P, 1e-7 * P);
-  EXPECT_NEAR(bed.particles.positions[0][2],
-              R - sphere_flat.overlap(P),
-              1e-8 * R);
-  EXPECT_EQ(bed.particles.positions[N], rattler);
+  expect_column_closed_form(bed, model, N, total, tolerance);
 }
 
 /// Algorithm 1 of Gonzalez 2018 as printed (the Gauss-Newton trust region
@@ -248,14 +266,7 @@ TEST(SolverEquilibrium, LeastSquaresSolvesAColumnToTheClosedForm)
   const ContactModel model = compax::testing::material1::contact_model();
   const int          N     = 6;
   const double       total = 0.2 * R;
-  Bed                bed;
-  bed.walls.diameter    = 12 * R;
-  bed.walls.upper_punch = 2 * R * N - total;
-  bed.contacts.set_skin(0.3 * R);
-  for (int k = 0; k < N; ++k)
-    bed.particles.add({0.0, 0.0, R + 2 * R * k}, R);
-  const Eigen::Vector3d rattler(4 * R, 0.0, 3 * R);
-  bed.particles.add(rattler, R);
+  Bed                bed   = column_with_rattler(N, total);
 
   EquilibriumOptions options;
   options.force_tolerance = 1e-9;
@@ -264,22 +275,5 @@ TEST(SolverEquilibrium, LeastSquaresSolvesAColumnToTheClosedForm)
   const EquilibriumResult r = solver.solve(bed, model);
   ASSERT_TRUE(r.converged) << r.iterations << " iterations, residual "
                            << r.relative_residual;
-  double lo = 0.0, hi = sphere_flat.force(total);
-  for (int i = 0; i < 200; ++i)
-    {
-      const double P = 0.5 * (lo + hi);
-      (2 * sphere_flat.overlap(P) + (N - 1) * sphere_sphere.overlap(P) < total
-         ? lo
-         : hi)
-        = P;
-    }
-  const double P = 0.5 * (lo + hi);
-  ContactSums  sums;
-  EXPECT_LT(net_force_check(bed, model, sums), options.force_tolerance);
-  EXPECT_NEAR(sums.wall_force[int(Wall::upper_punch)], P, 1e-7 * P);
-  EXPECT_NEAR(sums.wall_force[int(Wall::lower_punch)], P, 1e-7 * P);
-  EXPECT_NEAR(bed.particles.positions[0][2],
-              R - sphere_flat.overlap(P),
-              1e-8 * R);
-  EXPECT_EQ(bed.particles.positions[N], rattler);
+  expect_column_closed_form(bed, model, N, total, options.force_tolerance);
 }
