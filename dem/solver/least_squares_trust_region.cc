@@ -51,13 +51,6 @@ namespace compax::dem
   EquilibriumResult
   LeastSquaresTrustRegion::solve(EquilibriumSystem &system)
   {
-    return solve(system, opts.force_floor);
-  }
-
-  EquilibriumResult
-  LeastSquaresTrustRegion::solve(EquilibriumSystem &system,
-                                 const double       force_floor)
-  {
     EquilibriumResult result;
     const double      TOL1 = opts.step_tolerance * system.mean_radius();
     radius.start(system, opts.initial_radius, opts.max_radius, true);
@@ -70,7 +63,7 @@ namespace compax::dem
     };
     const auto balanced = [&]() {
       return result.relative_residual <= opts.force_tolerance
-             || max_particle_norm(F) <= force_floor;
+             || max_particle_norm(F) <= opts.force_floor;
     };
 
     assemble();

@@ -49,10 +49,6 @@ namespace compax::dem
     EquilibriumResult
     solve(EquilibriumSystem &system);
 
-    /// ... with `force_floor` [N] in place of EquilibriumOptions'.
-    EquilibriumResult
-    solve(EquilibriumSystem &system, double force_floor);
-
     const EquilibriumOptions &
     options() const
     {

@@ -69,8 +69,6 @@ namespace compax::dem
   FireResult
   LoadStepper::relax(Bed &bed, LoadStepResult &total)
   {
-    // A balanced relaxation stops where Newton would: at the relative force
-    // tolerance or below the absolute force floor.
     if (stepping.unjammed_equilibrium == UnjammedEquilibrium::least_squares)
       {
         // Algorithm 1 as printed: converged where the step vanishes.
@@ -78,6 +76,8 @@ namespace compax::dem
         accumulate(total, r);
         return as_relaxation(r);
       }
+    // A balanced relaxation stops where Newton would: at the relative force
+    // tolerance or below the absolute force floor.
     const bool lbfgs_minimiser
       = stepping.unjammed_equilibrium == UnjammedEquilibrium::balanced_lbfgs;
     const EquilibriumOptions &eq = newton.options();
