@@ -40,12 +40,4 @@ namespace compax::dem
     };
     return r;
   }
-
-  ContactHistory
-  HertzLaw::updated_history(const double,
-                            const ContactHistory &history,
-                            const ContactContext &) const
-  {
-    return history;
-  }
 } // namespace compax::dem

@@ -1,7 +1,7 @@
 #pragma once
 
-#include "dem/contact/contact_law.h"
 #include "dem/contact/contact_law_registry.h"
+#include "dem/contact/history_free_law.h"
 
 #include <cmath>
 
@@ -13,7 +13,7 @@ namespace compax::dem
    * a = sqrt(R gamma), for gamma > 0; no force otherwise (Johnson 1985,
    * Sec. 4.2; Gonzalez & Cuitino 2012, Eq. 9 with gamma_NL = 0).
    */
-  class HertzLaw final : public ContactLaw
+  class HertzLaw final : public HistoryFreeLaw<HertzLaw>
   {
   public:
     /// @param effective_radius R = (1/R1 + 1/R2)^{-1} [m]
@@ -30,29 +30,10 @@ namespace compax::dem
              double E2,
              double nu2);
 
-    /// A local law: the particle solvers may hold it (particle_law.h).
-    static constexpr bool needs_context = false;
-
     /// The law's parameters and builder for the command line
     /// (contact_law_registry.h).
     static RegisteredContactLaw
     registration();
-
-    using ContactLaw::evaluate;
-    using ContactLaw::updated_history;
-
-    ContactResponse
-    evaluate(double gamma,
-             const ContactHistory &,
-             const ContactContext &) const override
-    {
-      return response(gamma);
-    }
-
-    ContactHistory
-    updated_history(double                gamma,
-                    const ContactHistory &history,
-                    const ContactContext &context) const override;
 
     std::string
     name() const override

@@ -3,6 +3,7 @@
 #include "dem/contact/hertz.h"
 #include "dem/contact/multicontact_adhesive.h"
 #include "dem/contact/nonlocal_hertz.h"
+#include "dem/contact/plastic_hardening.h"
 #include "dem/contact/walton_braun.h"
 
 /**
@@ -25,5 +26,6 @@ namespace compax::dem
   using RegisteredLaws = LawList<HertzLaw,
                                  NonlocalHertzLaw,
                                  MulticontactAdhesiveLaw,
-                                 WaltonBraunLaw>;
+                                 WaltonBraunLaw,
+                                 PlasticHardeningLaw>;
 } // namespace compax::dem

@@ -170,18 +170,23 @@ TEST_F(DieCommand, BranchRerunFromItsCheckpointEqualsTheUninterruptedBranch)
 }
 
 /// A registered law runs in `compax die` through Contact/Contact law alone
-/// (the Walton-Braun spring of the explicit-DEM peer): the punches balance
-/// at every converged state and no solid bridge forms (the law has none).
-TEST_F(DieCommand, WaltonBraunLawRunsThroughTheRegistry)
+/// (the Walton-Braun spring of the explicit-DEM peer, and the plastic
+/// hardening law without elastic unloading): the punches balance at every
+/// converged state and no solid bridge forms (neither law has one).
+TEST_F(DieCommand, RegisteredLawsRunThroughTheRegistry)
 {
-  write("wb.prm",
-        small_bed
-          + "subsection Contact\n  set Contact law = walton-braun\nend\n");
-  const auto r = compax("die wb.prm -o out");
-  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
-  const Csv die(folder / "out" / "die.csv");
-  ASSERT_GT(die.rows(), 20u);
-  expect_balanced_punches(die);
-  for (const double s : die.column.at("bonding_surface"))
-    EXPECT_EQ(s, 0.0);
+  for (const std::string law : {"walton-braun", "plastic-hardening"})
+    {
+      SCOPED_TRACE(law);
+      write("law.prm",
+            small_bed + "subsection Contact\n  set Contact law = " + law
+              + "\nend\n");
+      const auto r = compax("die law.prm -o " + law);
+      ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+      const Csv die(folder / law / "die.csv");
+      ASSERT_GT(die.rows(), 20u);
+      expect_balanced_punches(die);
+      for (const double s : die.column.at("bonding_surface"))
+        EXPECT_EQ(s, 0.0);
+    }
 }
