@@ -30,7 +30,9 @@ namespace compax::cli
       const bool        without   = prm.get_bool("Compare without bonds");
       const std::string protocols = prm.get("Protocols");
       prm.leave_subsection();
-      std::vector<double> toughness{die.model.fracture_toughness(0, 0)};
+      // A registered law forms no bridges: its cases carry K_Ic = 0.
+      std::vector<double> toughness{
+        die.model.registered_law() ? 0.0 : die.model.fracture_toughness(0, 0)};
       if (without && toughness[0] > 0.0)
         toughness.push_back(0.0);
       for (const auto &protocol :

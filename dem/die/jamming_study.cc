@@ -51,16 +51,8 @@ namespace compax::dem
   with_fracture_toughness(const ContactModel &model,
                           const double        fracture_toughness)
   {
-    std::vector<ElastoplasticMaterial> materials;
-    for (unsigned int a = 0; a < model.n_materials(); ++a)
-      materials.push_back(model.material(a));
-    const std::size_t n = materials.size();
-    ContactModel      result(std::move(materials),
-                        std::vector<std::vector<double>>(
-                          n, std::vector<double>(n, fracture_toughness)),
-                        model.regularization);
-    result.wall_bonding = model.wall_bonding;
-    result.regularized  = model.regularized;
+    ContactModel result = model;
+    result.set_fracture_toughness(fracture_toughness);
     return result;
   }
 

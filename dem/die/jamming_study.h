@@ -93,7 +93,8 @@ namespace compax::dem
                    std::ostream             *progress = nullptr);
 
   /// The model with every K_Ic replaced by @p fracture_toughness [Pa
-  /// m^1/2] (materials, regularisation and wall bonding unchanged).
+  /// m^1/2] (materials, regularisation, wall bonding and a registered law
+  /// unchanged).
   ContactModel
   with_fracture_toughness(const ContactModel &model, double fracture_toughness);
 

@@ -2,6 +2,7 @@
 
 #include "dem/contact/pair_properties.h"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -32,6 +33,13 @@ namespace compax::dem
     for (const auto &row : toughness)
       if (row.size() != materials.size())
         throw std::invalid_argument("K_Ic table is not square");
+  }
+
+  void
+  ContactModel::set_fracture_toughness(const double fracture_toughness)
+  {
+    for (auto &row : toughness)
+      std::fill(row.begin(), row.end(), fracture_toughness);
   }
 
   void

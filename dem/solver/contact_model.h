@@ -48,6 +48,11 @@ namespace compax::dem
       return toughness[a][b];
     }
 
+    /// Sets K_Ic [Pa m^1/2] between every pair of materials; everything
+    /// else (materials, walls, a registered law) stays.
+    void
+    set_fracture_toughness(double fracture_toughness);
+
     /// Solid bridges with the punches and the die wall, using the K_Ic of
     /// the particle's material with itself (default off).
     bool wall_bonding = false;

@@ -10,16 +10,19 @@ using compax::testing::Csv;
 
 class JammingCommand : public AppTest
 {
+protected:
+  /// 150 spheres in a 3 mm die, 20 steps to rho = 0.8, no branches.
+  const std::string small_bed
+    = "subsection Packing\n set Number of particles = 150\n"
+      " set Die diameter = 3e-3\nend\n"
+      "subsection Protocol\n set Final relative density = 0.8\n"
+      " set Compaction steps = 20\n set Unloading points =\nend\n";
 };
 
 TEST_F(JammingCommand, SmallBedGivesOneFitPerProtocolAndToughness)
 {
   write("small.prm",
-        "subsection Packing\n set Number of particles = 150\n"
-        " set Die diameter = 3e-3\nend\n"
-        "subsection Protocol\n set Final relative density = 0.8\n"
-        " set Compaction steps = 20\n set Unloading points =\nend\n"
-        "subsection Jamming\n set Material label = m1\nend\n");
+        small_bed + "subsection Jamming\n set Material label = m1\nend\n");
   const auto r = compax("jamming small.prm -o out");
   ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
 
@@ -70,6 +73,28 @@ TEST_F(JammingCommand, SmallBedGivesOneFitPerProtocolAndToughness)
     }
   EXPECT_GT(n_relaxed, 0u);
   EXPECT_TRUE(std::filesystem::exists(folder / "out" / "timing.csv"));
+}
+
+/// A registered contact law is the law of every case (it once fell back to
+/// the bonded law): the plastic-hardening law forms no bridges, so its one
+/// case per protocol carries K_Ic = 0 and no state of its path has a bond
+/// (the bonded law's jammed states of this bed hold about 500).
+TEST_F(JammingCommand, RegisteredLawIsTheLawOfEveryCase)
+{
+  write("plastic.prm",
+        small_bed
+          + "subsection Contact\n set Contact law = plastic-hardening\nend\n"
+            "subsection Jamming\n set Protocols = bonded-path\nend\n");
+  const auto r = compax("jamming plastic.prm -o out");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const Csv jamming(folder / "out" / "jamming.csv");
+  ASSERT_EQ(jamming.rows(), 1u);
+  EXPECT_EQ(jamming.column.at("fracture_toughness")[0], 0.0);
+  EXPECT_LE(jamming.column.at("rho_jammed")[0], 0.8);
+  const Csv path(folder / "out" / "jamming_path.csv");
+  ASSERT_GT(path.rows(), 20u);
+  for (std::size_t i = 0; i < path.rows(); ++i)
+    EXPECT_EQ(path.column.at("bonds")[i], 0.0) << "row " << i;
 }
 
 TEST_F(JammingCommand, ElasticSpheresAreRefusedByName)

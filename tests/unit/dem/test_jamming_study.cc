@@ -2,7 +2,9 @@
 // of a compaction path uses exactly the jammed states (closed-form data
 // recovered, unjammed and branch rows ignored), and K_Ic = 0 removes the
 // bridge's pull-off of the law (Eq. 4 with K_Ic = 0) while keeping the
-// materials.
+// materials, and keeps a registered contact law.
+#include "dem/contact/contact_law_registry.h"
+#include "dem/contact/particle_law.h"
 #include "dem/die/jamming_study.h"
 #include "tests/support/gonzalez_material1.h"
 
@@ -10,6 +12,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <variant>
 
 using namespace compax::dem;
 namespace material1 = compax::testing::material1;
@@ -139,4 +142,37 @@ TEST(JammingStudy, ZeroToughnessKeepsMaterialsAndRemovesBridges)
             "rho_jammed,Z_jammed,rho_c_Z_interior,Z_c_interior,"
             "theta_interior\n"
             "m1,0,frozen-history,,,,0,0,,,\n");
+}
+
+/// A model whose contacts follow a registered law keeps that law when its
+/// toughness is replaced (the jamming study of `compax jamming` with a
+/// Contact law other than the bonded one): every pair then holds the
+/// registered law, whose force at an overlap is that law's, not the bonded
+/// law's.
+TEST(JammingStudy, ZeroToughnessKeepsARegisteredLaw)
+{
+  ContactModel                registered = material1::contact_model();
+  const RegisteredContactLaw *entry = find_contact_law("plastic-hardening");
+  ASSERT_NE(entry, nullptr);
+  registered.use_registered_law(*entry,
+                                {{"Plastic stiffness", 150e6},
+                                 {"Plastic exponent", 2.0}});
+  const ContactModel unbonded = with_fracture_toughness(registered, 0.0);
+  EXPECT_EQ(unbonded.registered_law(), entry);
+  EXPECT_EQ(unbonded.fracture_toughness(0, 0), 0.0);
+
+  const double R    = material1::R;
+  const auto   law  = unbonded.pair_law(0, R, 0, R);
+  const auto  *held = std::get_if<PlasticHardeningLaw>(&law);
+  ASSERT_NE(held, nullptr);
+  // Unloaded from a plastic radius of R/10, the plastic-hardening law
+  // retraces its loading curve where the bonded law unloads elastically.
+  const auto bonded
+    = bonded_law(material1::contact_model().pair_law(0, R, 0, R));
+  const double a_p   = R / 10;
+  const double gamma = 0.9 * bonded.plastic_overlap(a_p);
+  EXPECT_EQ(law_response(law, gamma, bonded.history(a_p, 0.0)).force,
+            held->response(gamma).force);
+  EXPECT_GT(held->response(gamma).force,
+            bonded.response(gamma, a_p, 0.0).force);
 }
