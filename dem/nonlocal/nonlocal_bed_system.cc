@@ -404,15 +404,17 @@ namespace compax::dem
       {
         gamma_nl.assign(n, 0.0);
         fixed_point_ = {0, true, 0.0};
-        for (std::size_t c = 0; c < n; ++c)
-          force[c] = law_response(laws[c], gamma[c], {}).force;
       }
 
     double sum_abs = 0.0;
     for (std::size_t c = 0; c < n; ++c)
       {
-        stiffness[c]
-          = law_response(laws[c], gamma[c] + gamma_nl[c], {}).stiffness;
+        // The local law's force and stiffness come from one evaluation;
+        // the nonlocal force is the fixed point's.
+        const auto response = law_response(laws[c], gamma[c] + gamma_nl[c], {});
+        stiffness[c]        = response.stiffness;
+        if (!opts.nonlocal)
+          force[c] = response.force;
         const double P = force[c];
         if (P == 0.0)
           continue;

@@ -89,12 +89,10 @@ namespace compax::dem
         // A balanced relaxation stops where Newton would: at the relative
         // force tolerance, or below the floor at which a loose cell counts
         // as force-free.
-        const UnjammedEquilibrium u = opts.unjammed_equilibrium;
-        const bool                lbfgs_minimiser
-          = !frozen && u == UnjammedEquilibrium::balanced_lbfgs;
+        const bool lbfgs_minimiser
+          = !frozen && relaxes_by_lbfgs(opts.unjammed_equilibrium);
         const bool balanced
-          = lbfgs_minimiser
-            || (!frozen && u == UnjammedEquilibrium::balanced_relaxation);
+          = !frozen && relaxes_to_balance(opts.unjammed_equilibrium);
         Relaxation      &minimiser = lbfgs_minimiser
                                        ? static_cast<Relaxation &>(lbfgs)
                                        : static_cast<Relaxation &>(fire);

@@ -49,12 +49,6 @@ namespace compax::dem
     EquilibriumResult
     solve(EquilibriumSystem &system);
 
-    const EquilibriumOptions &
-    options() const
-    {
-      return opts;
-    }
-
   private:
     /// The Gauss-Newton model Hessian K^2 / c, with c the preconditioner's
     /// scale, so that it has K's units and conditioning scale.

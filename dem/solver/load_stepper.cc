@@ -78,13 +78,12 @@ namespace compax::dem
       }
     // A balanced relaxation stops where Newton would: at the relative force
     // tolerance or below the absolute force floor.
-    const bool lbfgs_minimiser
-      = stepping.unjammed_equilibrium == UnjammedEquilibrium::balanced_lbfgs;
     const EquilibriumOptions &eq = newton.options();
     const auto                t0 = std::chrono::steady_clock::now();
-    Relaxation &minimiser = lbfgs_minimiser ? static_cast<Relaxation &>(lbfgs)
-                                            : static_cast<Relaxation &>(fire);
-    const bool  balanced  = balanced_relaxation();
+    Relaxation &minimiser = relaxes_by_lbfgs(stepping.unjammed_equilibrium)
+                              ? static_cast<Relaxation &>(lbfgs)
+                              : static_cast<Relaxation &>(fire);
+    const bool  balanced  = relaxes_to_balance(stepping.unjammed_equilibrium);
     const FireResult f    = balanced
                               ? minimiser.relax(bed,
                                              model,
@@ -102,14 +101,6 @@ namespace compax::dem
     total.fire_iterations += f.iterations;
     total.assemblies += f.assemblies;
     return f;
-  }
-
-  bool
-  LoadStepper::balanced_relaxation() const
-  {
-    return stepping.unjammed_equilibrium == UnjammedEquilibrium::balanced_lbfgs
-           || stepping.unjammed_equilibrium
-                == UnjammedEquilibrium::balanced_relaxation;
   }
 
   EquilibriumResult
@@ -179,7 +170,8 @@ namespace compax::dem
                                   LoadStepResult &total)
   {
     if (!(stepping.jamming_pressure > 0.0) || loose != 0
-        || !balanced_relaxation() || !(next.height() > saved.walls.height()))
+        || !relaxes_to_balance(stepping.unjammed_equilibrium)
+        || !(next.height() > saved.walls.height()))
       return EquilibriumResult{};
     bed = saved;
     predict(bed, next);

@@ -176,11 +176,6 @@ namespace compax::dem
     FireResult
     relax(Bed &bed, LoadStepResult &total);
 
-    /// Whether the relaxation balances to Newton's tolerances
-    /// (balanced-lbfgs, balanced-relaxation).
-    bool
-    balanced_relaxation() const;
-
     /// `total.last` of a converged relaxation.
     EquilibriumResult
     relaxed_result(const FireResult &f, LoadStepResult &total);

@@ -4,6 +4,19 @@
 
 namespace compax::dem
 {
+  bool
+  relaxes_to_balance(const UnjammedEquilibrium e)
+  {
+    return e == UnjammedEquilibrium::balanced_relaxation
+           || e == UnjammedEquilibrium::balanced_lbfgs;
+  }
+
+  bool
+  relaxes_by_lbfgs(const UnjammedEquilibrium e)
+  {
+    return e == UnjammedEquilibrium::balanced_lbfgs;
+  }
+
   std::string
   unjammed_equilibrium_name(const UnjammedEquilibrium e)
   {

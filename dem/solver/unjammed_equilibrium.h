@@ -43,6 +43,15 @@ namespace compax::dem
     least_squares
   };
 
+  /// Whether the loose steps' relaxation runs to the equilibrium
+  /// tolerances (balanced_relaxation, balanced_lbfgs).
+  bool
+  relaxes_to_balance(UnjammedEquilibrium e);
+
+  /// Whether the loose steps' relaxation is L-BFGS rather than FIRE.
+  bool
+  relaxes_by_lbfgs(UnjammedEquilibrium e);
+
   /// "relaxation", "relaxation+newton", "balanced-relaxation",
   /// "balanced-lbfgs" or "least-squares".
   std::string
