@@ -127,7 +127,9 @@ namespace compax::cli
                           "true",
                           dealii::Patterns::Bool(),
                           "Also run every protocol with K_Ic = 0 (no solid "
-                          "bridges), on the same deposit. Unit: -.");
+                          "bridges), on the same deposit. A registered "
+                          "Contact law forms no bridges: its cases run once, "
+                          "with K_Ic = 0 in jamming.csv. Unit: -.");
         prm.leave_subsection();
       }
 
