@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 
 namespace compax::dem
 {
@@ -18,6 +19,10 @@ namespace compax::dem
                                 const double      R2,
                                 const Parameters &parameters)
   {
+    if (!(parameters.plastic_stiffness > 0.0))
+      throw std::invalid_argument("plastic-hardening: kappa must be positive");
+    if (!(parameters.plastic_exponent >= 1.0))
+      throw std::invalid_argument("plastic-hardening: m must be at least 1");
     // The elastic constants only enter the bonded law's unloading branch,
     // which this law never takes: any finite values serve.
     ElastoplasticMaterial particle;

@@ -34,6 +34,7 @@ namespace compax::dem
 
     /// Law between spheres of radii R1 and R2 [m] of one material; pass
     /// compax::dem::rigid for R2 of a flat wall (rigid: kappa infinite).
+    /// Throws std::invalid_argument unless kappa > 0 and m >= 1.
     static PlasticHardeningLaw
     for_pair(double R1, double R2, const Parameters &parameters);
 

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace
 {
@@ -130,4 +131,12 @@ TEST(PlasticHardening, RegistryBuildsTheLawOfItsValues)
               1e-12 * hand_force(1e-6, 2e-4, n_wall));
   EXPECT_TRUE(law->history_variables().empty());
   EXPECT_FALSE(law->bonded(ContactHistory{}));
+}
+
+TEST(PlasticHardening, RejectsParametersOutsideTheirRange)
+{
+  EXPECT_THROW(PlasticHardeningLaw::for_pair(2e-4, 2e-4, {0.0, 2.0}),
+               std::invalid_argument);
+  EXPECT_THROW(PlasticHardeningLaw::for_pair(2e-4, 2e-4, {kappa, 0.5}),
+               std::invalid_argument);
 }
