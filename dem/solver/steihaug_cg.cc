@@ -46,41 +46,6 @@ namespace compax::dem
       }
   }
 
-  namespace
-  {
-    void
-    block_diagonal_product(const std::vector<double> &blocks,
-                           Eigen::VectorXd           &dst,
-                           const Eigen::VectorXd     &src)
-    {
-      const std::size_t n = blocks.size() / 9;
-      for (std::size_t i = 0; i < n; ++i)
-        {
-          const double *a  = blocks.data() + 9 * i;
-          const double *x  = src.data() + 3 * i;
-          double       *y  = dst.data() + 3 * i;
-          const double  x0 = x[0], x1 = x[1], x2 = x[2];
-          y[0] = a[0] * x0 + a[1] * x1 + a[2] * x2;
-          y[1] = a[3] * x0 + a[4] * x1 + a[5] * x2;
-          y[2] = a[6] * x0 + a[7] * x1 + a[8] * x2;
-        }
-    }
-  } // namespace
-
-  void
-  BlockJacobiPreconditioner::solve(Eigen::VectorXd       &dst,
-                                   const Eigen::VectorXd &src) const
-  {
-    block_diagonal_product(m_inv, dst, src);
-  }
-
-  void
-  BlockJacobiPreconditioner::multiply(Eigen::VectorXd       &dst,
-                                      const Eigen::VectorXd &src) const
-  {
-    block_diagonal_product(m, dst, src);
-  }
-
   double
   SteihaugCG::to_boundary(const Eigen::VectorXd           &s,
                           const Eigen::VectorXd           &p,
@@ -96,13 +61,4 @@ namespace compax::dem
     const double disc = std::sqrt(std::max(sp * sp - pp * c, 0.0));
     return (-sp + disc) / pp;
   }
-
-  template SteihaugResult
-  SteihaugCG::solve<BlockSparseMatrix>(const BlockSparseMatrix         &K,
-                                       const BlockJacobiPreconditioner &M,
-                                       const Eigen::VectorXd           &g,
-                                       double                           radius,
-                                       double           relative_tolerance,
-                                       int              max_iterations,
-                                       Eigen::VectorXd &s);
 } // namespace compax::dem
