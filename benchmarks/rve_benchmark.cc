@@ -162,7 +162,7 @@ namespace
                          (Eigen::Matrix3d::Identity() + strain_from_voigt(e))
                            * bed.deformation);
             PeriodicBedSystem system(bed, model(), assembler);
-            iterations += newton.solve(system).iterations;
+            iterations += newton.solve(system).work.iterations;
             benchmark::DoNotOptimize(love_weber_stress(bed)(2, 2));
           }
       }

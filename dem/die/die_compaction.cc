@@ -222,7 +222,7 @@ namespace compax::dem
   void
   DieCompaction::check(const LoadStepResult &r, const std::string &what)
   {
-    work.add(r);
+    work += r.work;
 
     if (!r.converged)
       {
@@ -285,8 +285,8 @@ namespace compax::dem
     d.bonds_broken          = r.bonds.broken;
     d.residual              = r.last.relative_residual;
     d.mean_contact_force    = s.mean_force;
-    d.iterations            = r.iterations;
-    d.cg_iterations         = r.cg_iterations;
+    d.iterations            = r.work.iterations;
+    d.cg_iterations         = r.work.cg_iterations;
     d.cutbacks              = r.cutbacks;
     d.relaxed               = r.relaxed ? 1 : 0;
     d.wall_seconds          = now() - start_time;
@@ -540,10 +540,10 @@ namespace compax::dem
                   << "  rho " << std::fixed << std::setprecision(4)
                   << d.relative_density << "  punch " << std::setprecision(2)
                   << d.upper_punch_pressure / 1e6 << " MPa  Z "
-                  << d.coordination_number << "  it " << r.iterations << " (cg "
-                  << r.cg_iterations << ", cut " << r.cutbacks << ")  "
-                  << std::setprecision(1) << now() - t0 << " s  left ~" << left
-                  << " s" << std::defaultfloat << std::endl;
+                  << d.coordination_number << "  it " << r.work.iterations
+                  << " (cg " << r.work.cg_iterations << ", cut " << r.cutbacks
+                  << ")  " << std::setprecision(1) << now() - t0 << " s  left ~"
+                  << left << " s" << std::defaultfloat << std::endl;
       }
   }
 
@@ -614,9 +614,9 @@ namespace compax::dem
         emit(d, bed);
         if (progress && protocol.verbose)
           *progress << "  unloading step " << step << " F "
-                    << d.upper_punch_force << " it " << r.iterations << " cg "
-                    << r.cg_iterations << " fire " << r.fire_iterations
-                    << std::endl;
+                    << d.upper_punch_force << " it " << r.work.iterations
+                    << " cg " << r.work.cg_iterations << " fire "
+                    << r.work.fire_iterations << std::endl;
         if (step == 1 && F_prev > d.upper_punch_force
             && protocol.min_unloading_steps > 1)
           {
@@ -696,9 +696,9 @@ namespace compax::dem
         emit(d, bed);
         if (progress && protocol.verbose)
           *progress << "  ejection step " << step << " F_die "
-                    << d.die_wall_force << " it " << r.iterations << " cg "
-                    << r.cg_iterations << " fire " << r.fire_iterations
-                    << std::endl;
+                    << d.die_wall_force << " it " << r.work.iterations << " cg "
+                    << r.work.cg_iterations << " fire "
+                    << r.work.fire_iterations << std::endl;
         if (d.die_wall_force == 0.0 && !remove)
           {
             // The tablet left the wall: remove it.

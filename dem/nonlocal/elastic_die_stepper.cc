@@ -72,9 +72,8 @@ namespace compax::dem
     if (s.n_loaded > 0)
       {
         const EquilibriumResult r = solver.solve(system);
-        total.iterations += r.iterations + r.krylov_iterations;
-        total.cg_iterations += r.cg_iterations;
-        total.fire_iterations += r.fire_iterations;
+        total.work += r.work;
+        total.work.iterations += r.krylov_iterations;
         converged = r.converged;
         relative  = r.relative_residual;
         s         = system.residual(F);

@@ -115,9 +115,10 @@ namespace compax::dem
             if (options.solver == BedSolver::nonlocal_trust_region && nonlocal)
               {
                 const EquilibriumResult tr = exact.solve(system);
-                pt.newton_iterations += tr.iterations + tr.krylov_iterations;
+                pt.newton_iterations
+                  += tr.work.iterations + tr.krylov_iterations;
                 pt.rejected_steps += tr.rejected_steps;
-                pt.fire_iterations += tr.fire_iterations;
+                pt.fire_iterations += tr.work.fire_iterations;
                 done = tr.converged;
               }
             if (options.solver == BedSolver::newton_krylov && nonlocal)
@@ -130,9 +131,9 @@ namespace compax::dem
             if (!done)
               {
                 const EquilibriumResult er = newton.solve(system);
-                pt.newton_iterations += er.iterations;
+                pt.newton_iterations += er.work.iterations;
                 pt.rejected_steps += er.rejected_steps;
-                pt.fire_iterations += er.fire_iterations;
+                pt.fire_iterations += er.work.fire_iterations;
                 done = er.converged;
               }
             ok = done;

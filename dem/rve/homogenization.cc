@@ -192,7 +192,7 @@ namespace compax::dem
         throw std::runtime_error(
           "finite-difference tangent: equilibrium did not converge (residual "
           + std::to_string(r.relative_residual * 1e12) + "e-12" + " after "
-          + std::to_string(r.iterations) + " iterations)");
+          + std::to_string(r.work.iterations) + " iterations)");
       return to_voigt(love_weber_stress(strained));
     };
     Matrix6d C;

@@ -72,9 +72,9 @@ namespace compax::dem
         else if (residual.allFinite())
           {
             const EquilibriumResult r = solver.solve(system);
-            total.iterations += r.iterations + r.krylov_iterations;
-            total.cg_iterations += r.cg_iterations;
-            total.relaxation_iterations += r.fire_iterations;
+            total.iterations += r.work.iterations + r.krylov_iterations;
+            total.cg_iterations += r.work.cg_iterations;
+            total.relaxation_iterations += r.work.fire_iterations;
             total.relative_residual = r.relative_residual;
             ok                      = r.converged;
           }

@@ -138,8 +138,8 @@ namespace compax::dem
         // state: Newton finishes from it.
       }
     const EquilibriumResult r = newton.solve(system);
-    total.iterations += r.iterations;
-    total.cg_iterations += r.cg_iterations;
+    total.iterations += r.work.iterations;
+    total.cg_iterations += r.work.cg_iterations;
     total.relative_residual = r.relative_residual;
     if (!r.converged)
       {

@@ -35,15 +35,8 @@ namespace compax::dem
     auto x = system.coordinates();
     for (int it = 0;; ++it)
       {
-        const auto balance = relaxation_balance(F, sums, target, force_floor);
-        result.relative_residual = balance.relative_residual;
-        result.iterations        = it;
-        if (balance.balanced)
-          {
-            result.converged = true;
-            break;
-          }
-        if (it >= max_iterations)
+        result.record(relaxation_balance(F, sums, target, force_floor), it);
+        if (result.converged || it >= max_iterations)
           break;
         // F is the gradient: the force is -F.
         const double power = -F.dot(v);

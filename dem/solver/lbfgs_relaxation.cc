@@ -91,15 +91,9 @@ namespace compax::dem
     auto x            = system.coordinates();
     for (;;)
       {
-        const auto balance = relaxation_balance(g, sums, target, force_floor);
-        result.relative_residual = balance.relative_residual;
-        result.iterations        = evaluations;
-        if (balance.balanced)
-          {
-            result.converged = true;
-            break;
-          }
-        if (evaluations >= max_evaluations)
+        result.record(relaxation_balance(g, sums, target, force_floor),
+                      evaluations);
+        if (result.converged || evaluations >= max_evaluations)
           break;
         if (accepted > 0 && accepted % preconditioner_interval == 0)
           {

@@ -41,10 +41,10 @@ namespace compax::dem
   {
     FireResult f;
     f.converged         = r.converged;
-    f.iterations        = r.iterations;
+    f.iterations        = r.work.iterations;
     f.relative_residual = r.relative_residual;
     f.sums              = r.sums;
-    f.assemblies        = r.assemblies;
+    f.assemblies        = r.work.assemblies;
     return f;
   }
 
@@ -55,16 +55,7 @@ namespace compax::dem
     const double      TOL1 = opts.step_tolerance * system.mean_radius();
     radius.start(system, opts.initial_radius, opts.max_radius, true);
 
-    auto assemble = [&]() {
-      const auto t0 = clock_type::now();
-      result.sums   = system.assemble(F, K);
-      result.assembly_seconds += seconds_since(t0);
-      ++result.assemblies;
-    };
-    const auto balanced = [&]() {
-      return result.relative_residual <= opts.force_tolerance
-             || max_particle_norm(F) <= opts.force_floor;
-    };
+    auto assemble = [&]() { assemble_timed(system, F, K, result); };
 
     assemble();
     // BlockSparseMatrix::vmult writes into sized vectors.
@@ -78,12 +69,8 @@ namespace compax::dem
                                      : std::numeric_limits<double>::infinity();
         if (!std::isfinite(result.relative_residual))
           break;
-        if (balanced())
-          {
-            result.converged = true;
-            break;
-          }
-        if (it >= opts.max_iterations)
+        result.converged = forces_balanced(result, F, opts);
+        if (result.converged || it >= opts.max_iterations)
           break;
 
         // Line 7: the Gauss-Newton model's gradient K F and Hessian K^2,
@@ -97,9 +84,9 @@ namespace compax::dem
         const double eta = std::min(opts.max_forcing, std::sqrt(F.norm() / F0));
         const SteihaugResult sub
           = cg.solve(KK, M, g, radius.value(), eta, opts.max_cg_iterations, s);
-        result.linear_seconds += seconds_since(t0);
-        result.cg_iterations += sub.iterations;
-        ++result.iterations;
+        result.work.linear_seconds += seconds_since(t0);
+        result.work.cg_iterations += sub.iterations;
+        ++result.work.iterations;
         const double pred = sub.predicted_decrease;
         // No particle may move more than half the Verlet skin in one step.
         // Gaps to contacts the model does not see need no clipping here

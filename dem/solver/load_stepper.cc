@@ -1,6 +1,7 @@
 #include "dem/solver/load_stepper.h"
 
 #include "dem/solver/punch_gap_map.h"
+#include "dem/wall_clock.h"
 
 #include <algorithm>
 #include <chrono>
@@ -34,13 +35,7 @@ namespace compax::dem
     void
     accumulate(LoadStepResult &total, const EquilibriumResult &r)
     {
-      total.iterations += r.iterations;
-      total.cg_iterations += r.cg_iterations;
-      total.assembly_seconds += r.assembly_seconds;
-      total.linear_seconds += r.linear_seconds;
-      total.assemblies += r.assemblies;
-      total.fire_iterations += r.fire_iterations;
-      total.fire_seconds += r.fire_seconds;
+      total.work += r.work;
       total.last = r;
     }
 
@@ -95,11 +90,9 @@ namespace compax::dem
                                              stepping.unjammed_tolerance,
                                              stepping.unjammed_iterations,
                                              stepping.force_resolution);
-    total.fire_seconds
-      += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
-           .count();
-    total.fire_iterations += f.iterations;
-    total.assemblies += f.assemblies;
+    total.work.fire_seconds += seconds_since(t0);
+    total.work.fire_iterations += f.iterations;
+    total.work.assemblies += f.assemblies;
     return f;
   }
 

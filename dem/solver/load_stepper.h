@@ -87,18 +87,13 @@ namespace compax::dem
   /// Outcome of one load step (possibly several sub-steps).
   struct LoadStepResult
   {
-    bool              converged     = false;
-    int               substeps      = 0;
-    int               cutbacks      = 0;
-    int               iterations    = 0;
-    int               cg_iterations = 0;
+    bool              converged = false;
+    int               substeps  = 0;
+    int               cutbacks  = 0;
     BondChanges       bonds;
     EquilibriumResult last;
-    double            assembly_seconds = 0.0;
-    double            linear_seconds   = 0.0;
-    int               assemblies       = 0;
-    int               fire_iterations  = 0;
-    double            fire_seconds     = 0.0;
+    /// The work of every sub-step, relaxations included.
+    SolverWork work;
     /// Whether the last converged sub-step was an unjammed relaxation
     /// rather than a Newton solve (balanced to
     /// LoadSteppingOptions::unjammed_tolerance or the force resolution, or

@@ -4,6 +4,7 @@
 #include "dem/solver/block_sparse_matrix.h"
 #include "dem/solver/contact_assembler.h"
 #include "dem/solver/equilibrium_system.h"
+#include "dem/solver/residual_norms.h"
 
 #include <Eigen/Core>
 
@@ -18,6 +19,16 @@ namespace compax::dem
     ContactSums sums;
     /// Residual evaluations with the stiffness (mass updates).
     int assemblies = 0;
+
+    /// Where the relaxation stands after @p evaluations residual
+    /// evaluations, by the shared stopping test (relaxation_balance).
+    void
+    record(const RelaxationBalance &balance, const int evaluations)
+    {
+      relative_residual = balance.relative_residual;
+      converged         = balance.balanced;
+      iterations        = evaluations;
+    }
   };
 
   /**

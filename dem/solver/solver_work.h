@@ -3,8 +3,8 @@
 /**
  * @file
  * The work the equilibrium solves of a run did, for performance reports:
- * one record that the load steps add up, the die protocol keeps across a
- * checkpoint and a study reports.
+ * one record that a solve reports, the load steps add up, the die protocol
+ * keeps across a checkpoint and a study reports.
  */
 
 namespace compax::dem
@@ -26,19 +26,18 @@ namespace compax::dem
     double linear_seconds   = 0.0;
     double fire_seconds     = 0.0;
 
-    /// Adds the work of one solve or load step (EquilibriumResult,
-    /// LoadStepResult: both name their work as this record does).
-    template <typename Result>
-    void
-    add(const Result &r)
+    /// Adds the work of another solve, sub-step or load step.
+    SolverWork &
+    operator+=(const SolverWork &other)
     {
-      iterations += r.iterations;
-      cg_iterations += r.cg_iterations;
-      assemblies += r.assemblies;
-      fire_iterations += r.fire_iterations;
-      assembly_seconds += r.assembly_seconds;
-      linear_seconds += r.linear_seconds;
-      fire_seconds += r.fire_seconds;
+      iterations += other.iterations;
+      cg_iterations += other.cg_iterations;
+      assemblies += other.assemblies;
+      fire_iterations += other.fire_iterations;
+      assembly_seconds += other.assembly_seconds;
+      linear_seconds += other.linear_seconds;
+      fire_seconds += other.fire_seconds;
+      return *this;
     }
   };
 } // namespace compax::dem

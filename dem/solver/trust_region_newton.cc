@@ -22,6 +22,27 @@ namespace compax::dem
   {
   }
 
+  void
+  assemble_timed(EquilibriumSystem &system,
+                 Eigen::VectorXd   &F,
+                 BlockSparseMatrix &K,
+                 EquilibriumResult &result)
+  {
+    const auto t0 = clock_type::now();
+    result.sums   = system.assemble(F, K);
+    result.work.assembly_seconds += seconds_since(t0);
+    ++result.work.assemblies;
+  }
+
+  bool
+  forces_balanced(const EquilibriumResult  &result,
+                  const Eigen::VectorXd    &F,
+                  const EquilibriumOptions &options)
+  {
+    return result.relative_residual <= options.force_tolerance
+           || max_particle_norm(F) <= options.force_floor;
+  }
+
   EquilibriumResult
   TrustRegionNewton::solve(Bed &bed, const ContactModel &model)
   {
@@ -51,12 +72,7 @@ namespace compax::dem
                  opts.reset_radius);
     trial.forget();
 
-    auto assemble = [&]() {
-      const auto t0 = clock_type::now();
-      result.sums   = system.assemble(F, K);
-      result.assembly_seconds += seconds_since(t0);
-      ++result.assemblies;
-    };
+    auto       assemble = [&]() { assemble_timed(system, F, K, result); };
     const auto relative = [&]() {
       return F.allFinite() ? relative_residual(F, result.sums)
                            : std::numeric_limits<double>::infinity();
@@ -74,10 +90,6 @@ namespace compax::dem
       }
     };
 
-    const auto forces_balanced = [&]() {
-      return result.relative_residual <= opts.force_tolerance
-             || max_particle_norm(F) <= opts.force_floor;
-    };
     const auto converged = [&](const bool force_ok) {
       return force_ok && trial.last_move() <= opts.step_tolerance * R_mean;
     };
@@ -97,7 +109,7 @@ namespace compax::dem
             best    = result.relative_residual;
             best_at = it;
           }
-        bool force_ok = forces_balanced();
+        bool force_ok = forces_balanced(result, F, opts);
         if (converged(force_ok))
           {
             result.converged = true;
@@ -139,8 +151,8 @@ namespace compax::dem
                                              target,
                                              opts.fire_iterations,
                                              opts.force_floor);
-            result.fire_seconds += seconds_since(tf);
-            result.fire_iterations += fr.iterations;
+            result.work.fire_seconds += seconds_since(tf);
+            result.work.fire_iterations += fr.iterations;
             if (opts.trace)
               *opts.trace << "  newton it " << it << " stalled: FIRE "
                           << fr.iterations << '\n';
@@ -155,7 +167,7 @@ namespace compax::dem
               break;
             if (opts.test_after_fallback)
               {
-                force_ok = forces_balanced();
+                force_ok = forces_balanced(result, F, opts);
                 if (converged(force_ok))
                   {
                     result.converged = true;
@@ -178,9 +190,9 @@ namespace compax::dem
                                             eta,
                                             opts.max_cg_iterations,
                                             s);
-        result.linear_seconds += seconds_since(t0);
-        result.cg_iterations += sub.iterations;
-        ++result.iterations;
+        result.work.linear_seconds += seconds_since(t0);
+        result.work.cg_iterations += sub.iterations;
+        ++result.work.iterations;
         double pred = sub.predicted_decrease, step_norm = sub.step_norm;
         s_full = s;
         if (opts.limit_to_gaps && limit_step_to_gaps(system, s, factor))

@@ -7,6 +7,7 @@
 #include "dem/solver/fire_relaxation.h"
 #include "dem/solver/newton_krylov.h"
 #include "dem/solver/residual_norms.h"
+#include "dem/solver/solver_work.h"
 #include "dem/solver/steihaug_cg.h"
 #include "dem/solver/trial_step.h"
 #include "dem/solver/trust_radius.h"
@@ -138,21 +139,30 @@ namespace compax::dem
   struct EquilibriumResult
   {
     bool converged      = false;
-    int  iterations     = 0;
-    int  cg_iterations  = 0;
     int  rejected_steps = 0;
     /// max_i |F_i| / mean contact force at the end [-].
     double      relative_residual = 0.0;
     ContactSums sums;
-    /// Time spent assembling F and K and in the linear solves [s].
-    double assembly_seconds = 0.0;
-    double linear_seconds   = 0.0;
-    int    assemblies       = 0;
-    int    fire_iterations  = 0;
-    double fire_seconds     = 0.0;
+    /// Iterations, assemblies and the time spent in them.
+    SolverWork work;
     /// Iterations of the Newton-Krylov finish (krylov_switch).
     int krylov_iterations = 0;
   };
+
+  /// Assembles F and K of @p system at its coordinates into @p result's
+  /// contact sums, counting and timing the assembly in its work record.
+  void
+  assemble_timed(EquilibriumSystem &system,
+                 Eigen::VectorXd   &F,
+                 BlockSparseMatrix &K,
+                 EquilibriumResult &result);
+
+  /// The equilibrium test of both trust-region solvers: F balanced to the
+  /// relative force tolerance, or every net force below the force floor.
+  bool
+  forces_balanced(const EquilibriumResult  &result,
+                  const Eigen::VectorXd    &F,
+                  const EquilibriumOptions &options);
 
   /**
    * Static equilibrium of a bed at fixed walls and fixed internal variables

@@ -107,7 +107,7 @@ TEST(RveDatabaseStudy, StoredBranchStressIsTheCellsEquilibriumAtItsStrain)
         = dem::TrustRegionNewton(tight).solve(system);
       ASSERT_TRUE(solve.converged)
         << "branch " << k << ": residual " << solve.relative_residual
-        << " after " << solve.iterations << " iterations";
+        << " after " << solve.work.iterations << " iterations";
       const dem::Vector6d solved = dem::to_voigt(dem::love_weber_stress(cell));
       std::printf("branch %zu: |sigma| %.4g MPa, re-solved differs by %.2g\n",
                   k,

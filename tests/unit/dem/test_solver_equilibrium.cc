@@ -273,7 +273,7 @@ TEST(SolverEquilibrium, LeastSquaresSolvesAColumnToTheClosedForm)
   options.step_tolerance  = 1e-12;
   LeastSquaresTrustRegion solver(options);
   const EquilibriumResult r = solver.solve(bed, model);
-  ASSERT_TRUE(r.converged) << r.iterations << " iterations, residual "
+  ASSERT_TRUE(r.converged) << r.work.iterations << " iterations, residual "
                            << r.relative_residual;
   expect_column_closed_form(bed, model, N, total, options.force_tolerance);
 }
