@@ -25,8 +25,8 @@ namespace compax::dem
     compute(const BlockSparseMatrix &K, double relative_floor = 1e-3);
 
     /// dst = M^{-1} src. Inline, like multiply(), so that it compiles into
-    /// the conjugate-gradient loop of every operator (about 10 % of the
-    /// linear-solve time as a call).
+    /// the conjugate-gradient loop of every operator, not only of the
+    /// assembled stiffness.
     void
     solve(Eigen::VectorXd &dst, const Eigen::VectorXd &src) const
     {
