@@ -21,16 +21,39 @@ namespace compax::cli
 {
   namespace
   {
+    /// The entries of `Calibration` that name the curve to fit.
+    struct CurveSource
+    {
+      /// CSV file; empty for a synthetic curve.
+      std::string file;
+      std::string strain_column, stress_column, stage_column;
+      /// Packing seed of the synthetic curve.
+      std::uint64_t synthetic_seed = 0;
+    };
+
+    CurveSource
+    get_curve_source(dealii::ParameterHandler &prm)
+    {
+      prm.enter_subsection("Calibration");
+      // A braced list is evaluated left to right.
+      const CurveSource source{prm.get("Measured curve"),
+                               prm.get("Strain column"),
+                               prm.get("Stress column"),
+                               prm.get("Stage column"),
+                               static_cast<std::uint64_t>(
+                                 prm.get_integer("Synthetic seed"))};
+      prm.leave_subsection();
+      return source;
+    }
+
     /// Reads a measured curve from a CSV file with a header line: the
     /// strain and stress columns, and the stage (1 loading, 2 unloading;
     /// all 1 if the column is not named or not there) by name.
     dem::StressStrainCurve
-    read_curve(const std::filesystem::path &file,
-               const std::string           &strain_column,
-               const std::string           &stress_column,
-               const std::string           &stage_column)
+    read_curve(const CurveSource &source)
     {
-      const std::string entry = "Calibration/Measured curve";
+      const std::filesystem::path file(source.file);
+      const std::string           entry = "Calibration/Measured curve";
       if (std::filesystem::is_directory(file))
         reject_entry(entry, file.string(), "is a folder, not a CSV file");
       if (!std::filesystem::exists(file))
@@ -39,10 +62,11 @@ namespace compax::cli
       try
         {
           const io::CsvTable table = io::CsvTable::read(file);
-          const std::size_t  e     = table.column(strain_column);
-          const std::size_t  s     = table.column(stress_column);
-          const bool staged = !stage_column.empty() && table.has(stage_column);
-          const std::size_t g = staged ? table.column(stage_column) : 0;
+          const std::size_t  e     = table.column(source.strain_column);
+          const std::size_t  s     = table.column(source.stress_column);
+          const bool         staged
+            = !source.stage_column.empty() && table.has(source.stage_column);
+          const std::size_t g = staged ? table.column(source.stage_column) : 0;
           for (std::size_t r = 0; r < table.rows(); ++r)
             {
               const double strain = table.number(r, e);
@@ -83,21 +107,17 @@ namespace compax::cli
       return law.multicontact_prefactor;
     }
 
-    /// The curve to fit: read from @p file (columns strain, stress, stage),
-    /// or, without a file, simulated with the setup's own law on a packing
-    /// of @p synthetic_seed (a synthetic test of the calibration).
+    /// The curve to fit: read from the source's file, or, without a file,
+    /// simulated with the setup's own law on a packing of the source's
+    /// synthetic seed (a synthetic test of the calibration).
     dem::StressStrainCurve
-    measured_curve(const McdemSetup                 &setup,
-                   const std::string                &file,
-                   const std::array<std::string, 3> &columns,
-                   const std::uint64_t               synthetic_seed)
+    measured_curve(const McdemSetup &setup, const CurveSource &source)
     {
       const auto truth = setup.material.normal_law;
-      if (!file.empty())
+      if (!source.file.empty())
         {
-          const dem::StressStrainCurve measured
-            = read_curve(file, columns[0], columns[1], columns[2]);
-          const double e_max
+          const dem::StressStrainCurve measured = read_curve(source);
+          const double                 e_max
             = *std::max_element(measured.strain.begin(), measured.strain.end());
           if (std::abs(e_max - setup.protocol.target_strain) > 0.02)
             std::cout << "Note: the measured curve reaches strain " << e_max
@@ -109,9 +129,9 @@ namespace compax::cli
                 << truth.unloading_stiffness_ratio
                 << ", kc/k1 = " << truth.adhesion_stiffness_ratio
                 << ", beta = " << truth.multicontact_prefactor
-                << " on packing seed " << synthetic_seed << "\n";
+                << " on packing seed " << source.synthetic_seed << "\n";
       dem::RveSpec rve = setup.rve;
-      rve.seed         = synthetic_seed;
+      rve.seed         = source.synthetic_seed;
       dem::UniaxialCompaction synthetic(setup.material, setup.settings, rve);
       synthetic.prepare(setup.protocol, [](const dem::CompactionProgress &p) {
         print_progress("[packing]", p);
@@ -267,14 +287,9 @@ namespace compax::cli
       {
         get_mcdem_setup(prm);
         spec(prm);
-        prm.enter_subsection("Calibration");
-        const std::string file          = prm.get("Measured curve");
-        const std::string strain_column = prm.get("Strain column"),
-                          stress_column = prm.get("Stress column"),
-                          stage_column  = prm.get("Stage column");
-        prm.leave_subsection();
-        if (!file.empty())
-          read_curve(file, strain_column, stress_column, stage_column);
+        const CurveSource source = get_curve_source(prm);
+        if (!source.file.empty())
+          read_curve(source);
       }
 
       int
@@ -283,24 +298,14 @@ namespace compax::cli
       {
         McdemSetup                 setup = get_mcdem_setup(prm);
         const dem::CalibrationSpec s     = spec(prm);
-        prm.enter_subsection("Calibration");
-        const std::string file             = prm.get("Measured curve");
-        const std::string strain_column    = prm.get("Strain column"),
-                          stress_column    = prm.get("Stress column"),
-                          stage_column     = prm.get("Stage column");
-        const std::uint64_t synthetic_seed = prm.get_integer("Synthetic seed");
-        prm.leave_subsection();
 
         auto progress = [](const dem::CompactionProgress &p) {
           print_progress("[packing]", p);
         };
-        const auto                   truth = setup.material.normal_law;
-        const dem::StressStrainCurve measured
-          = measured_curve(setup,
-                           file,
-                           {strain_column, stress_column, stage_column},
-                           synthetic_seed);
-        dem::UniaxialCompaction prepared(setup.material,
+        const auto                   truth    = setup.material.normal_law;
+        const CurveSource            source   = get_curve_source(prm);
+        const dem::StressStrainCurve measured = measured_curve(setup, source);
+        dem::UniaxialCompaction      prepared(setup.material,
                                          setup.settings,
                                          setup.rve);
         prepared.prepare(setup.protocol, progress);
@@ -337,7 +342,7 @@ namespace compax::cli
         for (std::size_t d = 0; d < s.parameters.size(); ++d)
           std::cout << s.parameters[d] << " = "
                     << value_of(result.law, s.parameters[d])
-                    << (file.empty()
+                    << (source.file.empty()
                           ? " (synthetic: "
                               + std::to_string(value_of(truth, s.parameters[d]))
                               + ")"
