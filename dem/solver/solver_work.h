@@ -21,7 +21,7 @@ namespace compax::dem
     /// Relaxation iterations (FIRE or L-BFGS) [-].
     long fire_iterations = 0;
     /// Time in assemblies, linear solves and relaxations [s]. The elastic
-    /// steppers do not time their work: 0 there.
+    /// steppers time their Newton solves only, not their consolidation.
     double assembly_seconds = 0.0;
     double linear_seconds   = 0.0;
     double fire_seconds     = 0.0;
