@@ -10,7 +10,6 @@
 #include "io/csv_writer.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <fstream>
 #include <iostream>
