@@ -261,10 +261,12 @@ namespace compax::coupling
       "the least-squares problem min |F|^2 whose step solves the "
       "Gauss-Newton model, converged when the step moves no particle "
       "farther than Solver/Step tolerance (Error = |s| < TOL1) or when "
-      "balanced; a loose bed's net forces along its mechanisms are out of "
-      "that model's reach, so its converged states may keep force chains "
-      "(die.csv's residual shows the imbalance left). Gauss-Newton "
-      "converges slowly where the residual does not vanish: raise "
+      "balanced; on the loose beds measured (README, The loose regime) "
+      "contacts opening and closing hold the "
+      "trust radius at the overlap scale and the solve ends when a "
+      "rejection cuts it below TOL1, so its converged states may keep "
+      "force chains (die.csv's residual shows the imbalance left). The "
+      "loose steps crawl at that radius: raise "
       "Solver/Maximum iterations (2000 for the 1500-sphere beds of the "
       "README's measurement).");
     declare_history_update(prm,

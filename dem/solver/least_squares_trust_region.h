@@ -26,15 +26,16 @@ namespace compax::dem
    * or floor.
    *
    * Where the bed is jammed (K non-singular on the loaded particles) this
-   * is Newton's equilibrium. Where it is loose, the stiffness is singular
-   * along the bed's mechanisms, and a net force along them is out of the
-   * model's reach: the step, and with it the Error, vanishes at a
-   * stationary point of |F|^2 (K F = 0) that need not be balanced. Such a
-   * state is converged in Algorithm 1's sense, and Eq. (13) applies to it
-   * (LoadStepper with UnjammedEquilibrium::least_squares): the printed
-   * protocol's loose states, beside the balanced ones of the energy
-   * minimisers. EquilibriumResult::relative_residual reports the imbalance
-   * left.
+   * is Newton's equilibrium. Where it is loose, steps that open or close
+   * contacts the model does not see are rejected, the trust radius stays
+   * at the scale of the overlaps, and every step lies on its boundary; the
+   * Error then falls below TOL1 when a rejection has cut the radius below
+   * it, on a state that need not be balanced (README, What ends a loose
+   * solve of Algorithm 1). Such a state is converged in Algorithm 1's
+   * sense, and Eq. (13) applies to it (LoadStepper with
+   * UnjammedEquilibrium::least_squares): the printed protocol's loose
+   * states, beside the balanced ones of the energy minimisers.
+   * EquilibriumResult::relative_residual reports the imbalance left.
    */
   class LeastSquaresTrustRegion
   {
