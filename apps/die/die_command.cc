@@ -156,9 +156,7 @@ namespace compax::cli
                 << "Solver: " << t.iterations << " Newton iterations ("
                 << t.cg_iterations << " CG), " << t.fire_iterations
                 << " relaxation iterations (FIRE or L-BFGS), ";
-      // The elastic (Hertz or nonlocal) stepper times its Newton solves
-      // but not its consolidation; a run without assemblies prints no
-      // zeros.
+      // A run without assemblies prints no zeros.
       if (t.assemblies > 0)
         std::cout << t.assemblies << " assemblies (" << t.assembly_seconds
                   << " s), linear solves " << t.linear_seconds

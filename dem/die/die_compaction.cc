@@ -492,8 +492,8 @@ namespace compax::dem
       = elastic
           ? elastic->consolidate(path, targets.back(), protocol.consolidation)
           : c.run(path, model, targets.back());
-    consolidation_seconds += r.seconds;
-    consolidation_iterations += r.iterations;
+    work.fire_seconds += r.seconds;
+    work.fire_iterations += r.iterations;
     work.assemblies += r.assemblies;
     rho_jammed = r.jammed ? path.relative_density() : 0.0;
     if (progress)

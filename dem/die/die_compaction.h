@@ -368,11 +368,9 @@ namespace compax::dem
     static void
     write_csv_row(std::ostream &out, const DieRecord &r);
 
-    /// Totals for performance reports.
+    /// Totals for performance reports, the consolidation's relaxation
+    /// included.
     SolverWork work;
-    /// Consolidation: wall time and relaxation iterations.
-    double consolidation_seconds    = 0.0;
-    long   consolidation_iterations = 0;
 
   private:
     /// One load step with the law of the protocol.

@@ -20,8 +20,7 @@ namespace compax::dem
     long assemblies = 0;
     /// Relaxation iterations (FIRE or L-BFGS) [-].
     long fire_iterations = 0;
-    /// Time in assemblies, linear solves and relaxations [s]. The elastic
-    /// steppers time their Newton solves only, not their consolidation.
+    /// Time in assemblies, linear solves and relaxations [s].
     double assembly_seconds = 0.0;
     double linear_seconds   = 0.0;
     double fire_seconds     = 0.0;
