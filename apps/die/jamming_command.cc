@@ -96,7 +96,8 @@ namespace compax::cli
              "theta_interior: Eq. 14 fitted to the die's interior, the "
              "region farther than two diameters from every wall, with "
              "its own solid fraction, coordination number and axial "
-             "stress), jamming_path.csv (every "
+             "stress; contact_law: bonded-elastoplastic or the "
+             "registered Contact/Contact law), jamming_path.csv (every "
              "case's compaction path: density, punch pressure [Pa], "
              "coordination number, bonds, bonding surface [m^2], whether "
              "the state is an unjammed relaxation, residual) and "
@@ -180,7 +181,12 @@ namespace compax::cli
                         << std::endl;
           }
         std::ofstream csv(folder / "jamming.csv");
-        dem::write_jamming_csv(csv, input.material, results);
+        const auto   *registered = die.model.registered_law();
+        dem::write_jamming_csv(csv,
+                               input.material,
+                               registered ? registered->name
+                                          : "bonded-elastoplastic",
+                               results);
         write_paths(folder / "jamming_path.csv", results);
         std::ofstream timing(folder / "timing.csv");
         timing << "fracture_toughness,protocol,wall_seconds\n";

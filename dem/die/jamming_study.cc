@@ -106,12 +106,13 @@ namespace compax::dem
   void
   write_jamming_csv(std::ostream                     &out,
                     const std::string                &material,
+                    const std::string                &contact_law,
                     const std::vector<JammingResult> &results)
   {
     const auto old = out.precision(10);
     out << "material,fracture_toughness,protocol,rho_c_Z,Z_c,theta,"
            "rho_jammed,Z_jammed,rho_c_Z_interior,Z_c_interior,"
-           "theta_interior\n";
+           "theta_interior,contact_law\n";
     const auto write_fit = [&out](const std::optional<CoordinationFit> &fit) {
       if (fit)
         out << fit->rho_c << ',' << fit->Z_c << ',' << fit->theta;
@@ -125,7 +126,7 @@ namespace compax::dem
         write_fit(r.fit);
         out << ',' << r.jamming_density << ',' << r.jamming_coordination << ',';
         write_fit(r.interior_fit);
-        out << '\n';
+        out << ',' << contact_law << '\n';
       }
     out.precision(old);
   }

@@ -103,9 +103,11 @@ namespace compax::dem
   /// rho_jammed,Z_jammed (where the punches first carried the jamming
   /// pressure; a measure that needs no fit), then
   /// rho_c_Z_interior,Z_c_interior,theta_interior (Eq. 14 of the
-  /// interior, JammingResult::interior_fit).
+  /// interior, JammingResult::interior_fit), then contact_law: the law
+  /// every contact followed (bonded-elastoplastic or a registered law).
   void
   write_jamming_csv(std::ostream                     &out,
                     const std::string                &material,
+                    const std::string                &contact_law,
                     const std::vector<JammingResult> &results);
 } // namespace compax::dem

@@ -31,6 +31,7 @@ TEST_F(JammingCommand, SmallBedGivesOneFitPerProtocolAndToughness)
   EXPECT_EQ(jamming.text.at("material")[0], "m1");
   EXPECT_EQ(jamming.text.at("protocol")[0], "bonded-path");
   EXPECT_EQ(jamming.text.at("protocol")[3], "frozen-history");
+  EXPECT_EQ(jamming.text.at("contact_law")[0], "bonded-elastoplastic");
   EXPECT_EQ(jamming.column.at("fracture_toughness")[1], 0.0);
   for (std::size_t i = 0; i < 4; ++i)
     {
@@ -78,7 +79,8 @@ TEST_F(JammingCommand, SmallBedGivesOneFitPerProtocolAndToughness)
 /// A registered contact law is the law of every case (it once fell back to
 /// the bonded law): the plastic-hardening law forms no bridges, so its one
 /// case per protocol carries K_Ic = 0 and no state of its path has a bond
-/// (the bonded law's jammed states of this bed hold about 500).
+/// (the bonded law's jammed states of this bed hold about 500); jamming.csv
+/// names the law.
 TEST_F(JammingCommand, RegisteredLawIsTheLawOfEveryCase)
 {
   write("plastic.prm",
@@ -90,6 +92,7 @@ TEST_F(JammingCommand, RegisteredLawIsTheLawOfEveryCase)
   const Csv jamming(folder / "out" / "jamming.csv");
   ASSERT_EQ(jamming.rows(), 1u);
   EXPECT_EQ(jamming.column.at("fracture_toughness")[0], 0.0);
+  EXPECT_EQ(jamming.text.at("contact_law")[0], "plastic-hardening");
   EXPECT_LE(jamming.column.at("rho_jammed")[0], 0.8);
   const Csv path(folder / "out" / "jamming_path.csv");
   ASSERT_GT(path.rows(), 20u);

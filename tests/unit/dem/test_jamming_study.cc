@@ -136,12 +136,12 @@ TEST(JammingStudy, ZeroToughnessKeepsMaterialsAndRemovesBridges)
   std::ostringstream csv;
   JammingResult      r;
   r.study_case = {0.0, true};
-  write_jamming_csv(csv, "m1", {r});
+  write_jamming_csv(csv, "m1", "bonded-elastoplastic", {r});
   EXPECT_EQ(csv.str(),
             "material,fracture_toughness,protocol,rho_c_Z,Z_c,theta,"
             "rho_jammed,Z_jammed,rho_c_Z_interior,Z_c_interior,"
-            "theta_interior\n"
-            "m1,0,frozen-history,,,,0,0,,,\n");
+            "theta_interior,contact_law\n"
+            "m1,0,frozen-history,,,,0,0,,,,bonded-elastoplastic\n");
 }
 
 /// A model whose contacts follow a registered law keeps that law when its
