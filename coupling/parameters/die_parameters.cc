@@ -262,13 +262,12 @@ namespace compax::coupling
       "Gauss-Newton model, converged when the step moves no particle "
       "farther than Solver/Step tolerance (Error = |s| < TOL1) or when "
       "balanced; on the loose beds measured (README, The loose regime) "
-      "contacts opening and closing hold the "
-      "trust radius at the overlap scale and the solve ends when a "
-      "rejection cuts it below TOL1, so its converged states may keep "
-      "force chains (die.csv's residual shows the imbalance left). The "
-      "loose steps crawl at that radius: raise "
-      "Solver/Maximum iterations (2000 for the 1500-sphere beds of the "
-      "README's measurement).");
+      "contacts opening and closing hold the trust radius at the overlap "
+      "scale and the solve ends when a rejection cuts it below TOL1, so "
+      "its converged states may keep force chains (die.csv's residual "
+      "shows the imbalance left). The loose steps crawl at that radius: "
+      "raise Solver/Maximum iterations (2000 for the 1500-sphere beds of "
+      "the README's measurement).");
     declare_history_update(prm,
                            "1e-2 x 0.5 MPa on a mean cross-section pi R^2, "
                            "7.6e-4 N for R = 220 um");
