@@ -59,12 +59,14 @@ namespace compax::coupling
     declare_registered_laws(prm, true);
   }
 
-  /// Whether the registered law of @p choice is elastic (keeps no internal
-  /// variables), so that the nonlocal formulation can be layered on it.
+  /// Whether the registered law of @p choice is elastic (a law of elastic
+  /// bodies that keeps no internal variables), so that the nonlocal
+  /// formulation can be layered on it.
   inline bool
   registered_law_is_elastic(const ContactChoice &choice)
   {
-    if (!choice.registered || choice.registered->context)
+    if (!choice.registered || choice.registered->context
+        || !choice.registered->elastic_bodies)
       return false;
     // Any pair of bodies: which variables a law keeps does not depend on
     // them.
@@ -93,10 +95,12 @@ namespace compax::coupling
         formulation,
         "the nonlocal formulation (Gonzalez & Cuitino 2012) is a layer on "
         "an elastic law; it needs Contact/Contact law = elastic or a "
-        "registered law without internal variables (here: "
+        "registered law of elastic bodies without internal variables "
+        "(hertz; here: "
           + law
-          + ", whose internal variables, such as a plastic radius, a solid "
-            "bridge or a largest overlap, are outside it)");
+          + ", whose plastic bodies or internal variables, such as a "
+            "plastic radius, a solid bridge or a largest overlap, are "
+            "outside it)");
     return choice;
   }
 

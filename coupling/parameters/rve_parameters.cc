@@ -485,10 +485,10 @@ namespace compax::coupling
       "hertz: independent contacts; nonlocal: the nonlocal contact "
       "formulation of Gonzalez & Cuitino 2012 (Algorithm 1 at every "
       "residual, contacts through lattice images included), a layer on an "
-      "elastic law: Contact law = elastic (Hertz) or a registered law "
-      "without internal variables (hertz). Elastic cells are solved by a trust "
-      "region on the "
-      "frozen-angle Hessian with an exact-Jacobian Newton-Krylov finish, "
+      "elastic law: Contact law = elastic (Hertz) or a registered law of "
+      "elastic bodies without internal variables (hertz). Elastic cells are "
+      "solved by a trust region on the frozen-angle Hessian with an "
+      "exact-Jacobian Newton-Krylov finish, "
       "below Solver/Jamming pressure by FIRE with the local law alone.");
   }
 

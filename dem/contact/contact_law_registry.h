@@ -46,6 +46,12 @@ namespace compax::dem
     std::function<ContactContextAt(const LawParameterValues &values,
                                    const ContactBodies      &bodies)>
       context;
+    /// Whether the law is the contact of the materials' elastic spheres
+    /// (E, nu), so that the nonlocal formulation of Gonzalez & Cuitino 2012,
+    /// whose far field is that of elastic spheres, may be layered on it. A
+    /// law that keeps internal variables or needs a context is refused
+    /// there whatever this says.
+    bool elastic_bodies = false;
   };
 
   /// The laws built from their own declarations, in the order offered.

@@ -31,10 +31,11 @@ namespace compax::dem
   HertzLaw::registration()
   {
     RegisteredContactLaw r;
-    r.name        = "hertz";
-    r.description = "elastic spheres";
-    r.subsection  = "Hertz";
-    r.make        = [](const LawParameterValues &, const ContactBodies &b) {
+    r.name           = "hertz";
+    r.description    = "elastic spheres";
+    r.subsection     = "Hertz";
+    r.elastic_bodies = true;
+    r.make           = [](const LawParameterValues &, const ContactBodies &b) {
       return std::make_unique<HertzLaw>(
         for_pair(b.R1, b.E1, b.nu1, b.R2, b.E2, b.nu2));
     };

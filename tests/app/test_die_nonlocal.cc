@@ -86,12 +86,18 @@ TEST_F(DieNonlocal, LayerOnTheRegisteredHertzLawFollowsTheElasticRun)
     }
 }
 
-TEST_F(DieNonlocal, NonlocalOnALawWithInternalVariablesIsRefused)
+/// The nonlocal far field is that of elastic spheres: a law that keeps
+/// internal variables (walton-braun) or whose bodies are plastic
+/// (plastic-hardening, history-free) is refused by name.
+TEST_F(DieNonlocal, NonlocalOnALawWithoutElasticBodiesIsRefused)
 {
-  write("bad.prm", tiny_bed("walton-braun", "nonlocal"));
-  const auto r = compax("die bad.prm -o bad");
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("Contact/Formulation"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("walton-braun"), std::string::npos) << r.err;
-  EXPECT_FALSE(std::filesystem::exists(folder / "bad" / "die.csv"));
+  for (const std::string law : {"walton-braun", "plastic-hardening"})
+    {
+      write("bad.prm", tiny_bed(law, "nonlocal"));
+      const auto r = compax("die bad.prm -o bad");
+      EXPECT_EQ(r.exit_code, 2) << law;
+      EXPECT_NE(r.err.find("Contact/Formulation"), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find(law), std::string::npos) << r.err;
+      EXPECT_FALSE(std::filesystem::exists(folder / "bad" / "die.csv"));
+    }
 }
