@@ -315,10 +315,9 @@ namespace compax::coupling
       "Algorithm 1: the deformation of a particle by all its contact forces "
       "enters each contact), a layer on an elastic law: Contact law = "
       "elastic (Hertz) or a registered law of elastic bodies without "
-      "internal variables (hertz). With Contact law = elastic, or the nonlocal "
-      "formulation, "
-      "the equilibria are solved by a trust region on the "
-      "frozen-angle Hessian with an exact-Jacobian Newton-Krylov finish "
+      "internal variables (hertz). With Contact law = elastic, or the "
+      "nonlocal formulation, the equilibria are solved by a trust region on "
+      "the frozen-angle Hessian with an exact-Jacobian Newton-Krylov finish "
       "(consolidation with the local law alone), for both formulations.");
   }
 

@@ -488,8 +488,8 @@ namespace compax::coupling
       "elastic law: Contact law = elastic (Hertz) or a registered law of "
       "elastic bodies without internal variables (hertz). Elastic cells are "
       "solved by a trust region on the frozen-angle Hessian with an "
-      "exact-Jacobian Newton-Krylov finish, "
-      "below Solver/Jamming pressure by FIRE with the local law alone.");
+      "exact-Jacobian Newton-Krylov finish, below Solver/Jamming pressure "
+      "by FIRE with the local law alone.");
   }
 
   RveCell
