@@ -181,11 +181,9 @@ namespace compax::cli
                         << std::endl;
           }
         std::ofstream csv(folder / "jamming.csv");
-        const auto   *registered = die.model.registered_law();
         dem::write_jamming_csv(csv,
                                input.material,
-                               registered ? registered->name
-                                          : "bonded-elastoplastic",
+                               die.model.law_name(),
                                results);
         write_paths(folder / "jamming_path.csv", results);
         std::ofstream timing(folder / "timing.csv");

@@ -6,6 +6,8 @@
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <variant>
 
 namespace compax::dem
 {
@@ -74,6 +76,14 @@ namespace compax::dem
                                   + " is not among the particle solvers' "
                                     "laws (particle_law.h)");
     return *held;
+  }
+
+  std::string
+  ContactModel::law_name() const
+  {
+    // Any pair: every contact of the model follows the same law.
+    return std::visit([](const auto &law) { return law.name(); },
+                      pair_law(0, 1.0, 0, 1.0));
   }
 
   ParticleLaw

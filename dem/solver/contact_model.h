@@ -4,6 +4,7 @@
 #include "dem/contact/elastoplastic_material.h"
 #include "dem/contact/particle_law.h"
 
+#include <string>
 #include <vector>
 
 namespace compax::dem
@@ -82,6 +83,11 @@ namespace compax::dem
     {
       return registered;
     }
+
+    /// The name of the law every contact follows (ContactLaw::name(), e.g.
+    /// bonded-elastoplastic), for output that says which law it holds.
+    std::string
+    law_name() const;
 
     ParticleLaw
     pair_law(unsigned int material_i,
