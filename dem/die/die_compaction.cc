@@ -58,6 +58,36 @@ namespace compax::dem
       std::streamsize         precision = 0;
     };
 
+    /**
+     * Wall time the compaction steps after @p step of @p n_steps will take
+     * [s], at the mean cost of the steps since the bed jammed (the rows
+     * from density @p rho_jammed on; all compaction rows while none is
+     * known). The loose steps before jamming cost a fraction of a jammed
+     * step and the onset many, so the jammed steps alone predict the rest.
+     */
+    double
+    compaction_seconds_left(const std::vector<DieRecord> &rows,
+                            const double                  rho_jammed,
+                            const int                     step,
+                            const int                     n_steps,
+                            const double                  elapsed)
+    {
+      double since = 0.0;
+      int    from  = 0;
+      if (rho_jammed > 0.0)
+        for (const DieRecord &r : rows)
+          if (r.stage == "compaction" && r.relative_density >= rho_jammed)
+            {
+              since = r.wall_seconds;
+              from  = r.step;
+              break;
+            }
+      const int done = step - from;
+      if (done <= 0)
+        return elapsed / step * (n_steps - step);
+      return (elapsed - since) / done * (n_steps - step);
+    }
+
     /// Punch gap at which the bed reaches in-die relative density rho.
     double
     gap_for(const Bed &bed, const double rho)
@@ -534,16 +564,23 @@ namespace compax::dem
     emit(d, path);
     if (progress)
       {
-        const double elapsed = now() - start_time;
-        const double left    = elapsed / step * (n_steps - step);
+        // Before jamming the cost of the onset ahead is unknown: the mean
+        // so far (cheap loose steps) only bounds what is left from below.
+        const bool loose = rho_jammed == 0.0 && !protocol.consolidate
+                           && !elastic && stepper->unjammed(path);
+        const double left = compaction_seconds_left(
+          rows, rho_jammed, step, n_steps, now() - start_time);
         *progress << "compaction " << std::setw(3) << step << "/" << n_steps
                   << "  rho " << std::fixed << std::setprecision(4)
                   << d.relative_density << "  punch " << std::setprecision(2)
                   << d.upper_punch_pressure / 1e6 << " MPa  Z "
                   << d.coordination_number << "  it " << r.work.iterations
-                  << " (cg " << r.work.cg_iterations << ", cut " << r.cutbacks
-                  << ")  " << std::setprecision(1) << now() - t0 << " s  left ~"
-                  << left << " s" << std::defaultfloat << std::endl;
+                  << " (cg " << r.work.cg_iterations << ", relax "
+                  << r.work.fire_iterations << ", cut " << r.cutbacks << ")  "
+                  << std::setprecision(1) << now() - t0 << " s  left "
+                  << (loose ? "> " : "~") << left << " s"
+                  << (loose ? " (loose bed, jamming onset ahead)" : "")
+                  << std::defaultfloat << std::endl;
       }
   }
 
