@@ -566,8 +566,9 @@ namespace compax::dem
       {
         // Before jamming the cost of the onset ahead is unknown: the mean
         // so far (cheap loose steps) only bounds what is left from below.
-        const bool loose = rho_jammed == 0.0 && !protocol.consolidate
-                           && !elastic && stepper->unjammed(path);
+        // The bonded path is loose until rho_jammed is set, just above.
+        const bool loose
+          = rho_jammed == 0.0 && !protocol.consolidate && !elastic;
         const double left = compaction_seconds_left(
           rows, rho_jammed, step, n_steps, now() - start_time);
         *progress << "compaction " << std::setw(3) << step << "/" << n_steps
