@@ -557,9 +557,10 @@ namespace compax::dem
     DieRecord d      = record(path, "compaction", 0, step, r);
     d.rho_max_in_die = d.relative_density;
     // The bonded path jams where the punches first carry the jamming
-    // pressure (from there on Newton solves every step).
-    if (rho_jammed == 0.0 && !protocol.consolidate && !elastic
-        && !stepper->unjammed(path))
+    // pressure (from there on Newton solves every step); the other
+    // protocols have no onset of their own to find.
+    const bool bonded_path = !protocol.consolidate && !elastic;
+    if (bonded_path && rho_jammed == 0.0 && !stepper->unjammed(path))
       rho_jammed = d.relative_density;
     emit(d, path);
     if (progress)
@@ -567,9 +568,8 @@ namespace compax::dem
         // Before jamming the cost of the onset ahead is unknown: the mean
         // so far (cheap loose steps) only bounds what is left from below.
         // The bonded path is loose until rho_jammed is set, just above.
-        const bool loose
-          = rho_jammed == 0.0 && !protocol.consolidate && !elastic;
-        const double left = compaction_seconds_left(
+        const bool   loose = bonded_path && rho_jammed == 0.0;
+        const double left  = compaction_seconds_left(
           rows, rho_jammed, step, n_steps, now() - start_time);
         *progress << "compaction " << std::setw(3) << step << "/" << n_steps
                   << "  rho " << std::fixed << std::setprecision(4)
