@@ -14,6 +14,9 @@ namespace compax::dem
 {
   namespace
   {
+    /// Wall time between the progress lines of one relaxation [s].
+    constexpr double relaxation_report_interval = 30.0;
+
     double
     now()
     {
@@ -233,6 +236,31 @@ namespace compax::dem
         stepping.secant_predictor_unjammed = protocol.secant_predictor_unjammed;
       }
     stepper = std::make_unique<LoadStepper>(model, equilibrium, stepping);
+    report_relaxations();
+  }
+
+  void
+  DieCompaction::report_relaxations()
+  {
+    if (!stepper)
+      return;
+    if (!progress)
+      {
+        stepper->report_relaxations({}, 0.0);
+        return;
+      }
+    std::ostream *out = progress;
+    stepper->report_relaxations(
+      [out](const RelaxationProgress &p) {
+        std::ostringstream line;
+        line << "  relaxing: " << p.evaluations << " residual evaluations in "
+             << std::fixed << std::setprecision(0) << p.seconds
+             << " s, largest net force " << std::scientific
+             << std::setprecision(2) << p.largest_force << " N, balanced below "
+             << p.balanced_below << " N";
+        *out << line.str() << std::endl;
+      },
+      relaxation_report_interval);
   }
 
   LoadStepResult
@@ -247,6 +275,7 @@ namespace compax::dem
   {
     csv      = csv_;
     progress = progress_;
+    report_relaxations();
   }
 
   void

@@ -217,7 +217,9 @@ namespace compax::dem
                   EquilibriumOptions  equilibrium = {});
 
     /// Where rows go as they are computed (CSV with header); progress
-    /// lines go to `progress` (may be null).
+    /// lines go to `progress` (may be null), among them a line every 30 s
+    /// of a relaxation that runs that long (the jamming onset of a large
+    /// bed: one load step may relax for minutes).
     void
     set_output(std::ostream *csv, std::ostream *progress);
 
@@ -380,6 +382,10 @@ namespace compax::dem
     /// A fresh stepper (no predictor memory).
     void
     reset_stepper();
+
+    /// Points the stepper's relaxation reports at `progress`.
+    void
+    report_relaxations();
 
     /// The compaction targets from index `first` on.
     void

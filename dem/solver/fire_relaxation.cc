@@ -27,6 +27,7 @@ namespace compax::dem
     inverse_mass.resize(3 * n);
     const double cap = 0.1 * system.skin();
 
+    start_reports();
     FireResult result;
     double     dt = 0.1, alpha = alpha0;
     int        n_positive = 0;
@@ -35,7 +36,7 @@ namespace compax::dem
     auto x = system.coordinates();
     for (int it = 0;; ++it)
       {
-        result.record(relaxation_balance(F, sums, target, force_floor), it);
+        record(result, relaxation_balance(F, sums, target, force_floor), it);
         if (result.converged || it >= max_iterations)
           break;
         // F is the gradient: the force is -F.

@@ -84,6 +84,7 @@ namespace compax::dem
     scaling          = 1.0;
     const double cap = system.skin();
 
+    start_reports();
     FireResult result;
     assemble_inverse_diagonal(system, g, inverse_diagonal);
     int evaluations = 1, accepted = 0;
@@ -91,8 +92,9 @@ namespace compax::dem
     auto x            = system.coordinates();
     for (;;)
       {
-        result.record(relaxation_balance(g, sums, target, force_floor),
-                      evaluations);
+        record(result,
+               relaxation_balance(g, sums, target, force_floor),
+               evaluations);
         if (result.converged || evaluations >= max_evaluations)
           break;
         if (accepted > 0 && accepted % preconditioner_interval == 0)

@@ -138,6 +138,16 @@ namespace compax::dem
       return newton;
     }
 
+    /// Reports the progress of the unjammed relaxations and of the last
+    /// resort (FIRE or L-BFGS) every @p interval seconds [s] of a
+    /// relaxation; an empty report reports nothing.
+    void
+    report_relaxations(const RelaxationReport &report, const double interval)
+    {
+      fire.report_progress(report, interval);
+      lbfgs.report_progress(report, interval);
+    }
+
     /// Forgets the last increment (the next sub-step uses the affine
     /// predictor), e.g. after the bed was changed outside the stepper.
     void

@@ -3,6 +3,8 @@
 #include "dem/solver/die_bed_system.h"
 #include "dem/solver/stiffness_scaling.h"
 
+#include <utility>
+
 namespace compax::dem
 {
   FireResult
@@ -14,6 +16,41 @@ namespace compax::dem
   {
     DieBedSystem system(bed, model, assembler);
     return relax(system, target, budget, force_floor);
+  }
+
+  void
+  Relaxation::report_progress(RelaxationReport report_, const double interval)
+  {
+    report          = std::move(report_);
+    report_interval = interval;
+  }
+
+  void
+  Relaxation::start_reports()
+  {
+    started     = std::chrono::steady_clock::now();
+    last_report = started;
+  }
+
+  void
+  Relaxation::record(FireResult              &result,
+                     const RelaxationBalance &balance,
+                     const int                evaluations)
+  {
+    result.record(balance, evaluations);
+    if (!report)
+      return;
+    const auto now = std::chrono::steady_clock::now();
+    if (std::chrono::duration<double>(now - last_report).count()
+        < report_interval)
+      return;
+    last_report = now;
+    RelaxationProgress p;
+    p.evaluations    = evaluations;
+    p.seconds        = std::chrono::duration<double>(now - started).count();
+    p.largest_force  = balance.largest_force;
+    p.balanced_below = balance.balanced_below;
+    report(p);
   }
 
   void

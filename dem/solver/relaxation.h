@@ -8,8 +8,28 @@
 
 #include <Eigen/Core>
 
+#include <chrono>
+#include <functional>
+
 namespace compax::dem
 {
+  /// Where a running relaxation stands: what a progress report shows while
+  /// one load step of a large bed relaxes for minutes (the jamming onset).
+  struct RelaxationProgress
+  {
+    /// Residual evaluations so far (FIRE iterations, L-BFGS evaluations).
+    int evaluations = 0;
+    /// Wall time since the relaxation started [s].
+    double seconds = 0.0;
+    /// max_i |F_i| [N].
+    double largest_force = 0.0;
+    /// The force max_i |F_i| must fall below [N] (RelaxationBalance).
+    double balanced_below = 0.0;
+  };
+
+  /// Receives RelaxationProgress while a relaxation runs.
+  using RelaxationReport = std::function<void(const RelaxationProgress &)>;
+
   /// Outcome of a relaxation (FIRE or L-BFGS).
   struct FireResult
   {
@@ -64,7 +84,23 @@ namespace compax::dem
           int                 budget,
           double              force_floor = 0.0);
 
+    /// Calls @p report every @p interval seconds [s] of wall time while a
+    /// relaxation runs; an empty report (the default) reports nothing.
+    /// Reading the clock costs nothing next to a residual evaluation.
+    void
+    report_progress(RelaxationReport report, double interval);
+
   protected:
+    /// Starts the clock of the reports (at the start of relax()).
+    void
+    start_reports();
+
+    /// result.record(balance, evaluations), and a report if one is due.
+    void
+    record(FireResult              &result,
+           const RelaxationBalance &balance,
+           int                      evaluations);
+
     /// Assembles the residual into @p F and the stiffness at the system's
     /// state, and returns each coordinate's inverse diagonal stiffness in
     /// @p inverse_diagonal: the inverse masses of FIRE and the
@@ -77,5 +113,10 @@ namespace compax::dem
     ContactAssembler  assembler;
     BlockSparseMatrix K;
     ContactSums       sums;
+
+  private:
+    RelaxationReport                      report;
+    double                                report_interval = 0.0;
+    std::chrono::steady_clock::time_point started, last_report;
   };
 } // namespace compax::dem

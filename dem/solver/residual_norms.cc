@@ -33,7 +33,9 @@ namespace compax::dem
     const double      fmax = max_particle_norm(F);
     RelaxationBalance b;
     b.relative_residual = sums.mean_force > 0.0 ? fmax / sums.mean_force : 0.0;
-    b.balanced = fmax <= target * sums.mean_force || fmax <= force_floor;
+    b.balanced_below    = std::max(target * sums.mean_force, force_floor);
+    b.balanced          = fmax <= b.balanced_below;
+    b.largest_force     = fmax;
     return b;
   }
 } // namespace compax::dem

@@ -23,6 +23,11 @@ namespace compax::dem
     double relative_residual = 0.0;
     /// max_i |F_i| <= target * mean contact force, or <= the force floor.
     bool balanced = false;
+    /// max_i |F_i| [N].
+    double largest_force = 0.0;
+    /// The force below which max_i |F_i| is balanced: the larger of
+    /// target * mean contact force and the force floor [N].
+    double balanced_below = 0.0;
   };
 
   /// The stopping test the relaxations share: balanced to @p target [-]

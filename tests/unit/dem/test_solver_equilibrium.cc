@@ -1,3 +1,4 @@
+#include "dem/solver/fire_relaxation.h"
 #include "dem/solver/lbfgs_relaxation.h"
 #include "dem/solver/least_squares_trust_region.h"
 #include "dem/solver/load_stepper.h"
@@ -6,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 using namespace compax::dem;
 
@@ -254,6 +256,55 @@ TEST(SolverEquilibrium, LbfgsRelaxesAColumnToTheClosedForm)
   ASSERT_TRUE(r.converged) << r.iterations << " evaluations, residual "
                            << r.relative_residual;
   expect_column_closed_form(bed, model, N, total, tolerance);
+}
+
+/// The progress reports of a relaxation (reported at every evaluation with
+/// a zero interval) follow its stopping test and change nothing: FIRE and
+/// L-BFGS on the unrelaxed column report increasing evaluation counts up to
+/// the result's, their last report is balanced below the tolerance times
+/// the mean contact force of the closed form (every contact of the column
+/// carries P), and the relaxed column is the same to the bit as without
+/// reports.
+TEST(SolverEquilibrium, RelaxationReportsFollowTheStoppingTestAndChangeNothing)
+{
+  const ContactModel model     = compax::testing::material1::contact_model();
+  const int          N         = 6;
+  const double       total     = 0.2 * R;
+  const double       P         = column_force(N, total);
+  const double       tolerance = 1e-9;
+  FireRelaxation     fire;
+  LbfgsRelaxation    lbfgs;
+  for (Relaxation *minimiser :
+       {static_cast<Relaxation *>(&fire), static_cast<Relaxation *>(&lbfgs)})
+    {
+      Bed              quiet = column_with_rattler(N, total);
+      const FireResult q = minimiser->relax(quiet, model, tolerance, 100000);
+      ASSERT_TRUE(q.converged);
+
+      std::vector<RelaxationProgress> reports;
+      minimiser->report_progress(
+        [&reports](const RelaxationProgress &p) { reports.push_back(p); }, 0.0);
+      Bed              bed = column_with_rattler(N, total);
+      const FireResult r   = minimiser->relax(bed, model, tolerance, 100000);
+      minimiser->report_progress({}, 0.0);
+
+      ASSERT_TRUE(r.converged);
+      ASSERT_GE(reports.size(), 2u);
+      for (std::size_t k = 1; k < reports.size(); ++k)
+        {
+          EXPECT_GT(reports[k].evaluations, reports[k - 1].evaluations);
+          EXPECT_GE(reports[k].seconds, reports[k - 1].seconds);
+        }
+      const RelaxationProgress &last = reports.back();
+      EXPECT_EQ(last.evaluations, r.iterations);
+      EXPECT_NEAR(last.balanced_below, tolerance * P, 1e-6 * tolerance * P);
+      EXPECT_LE(last.largest_force, last.balanced_below);
+      EXPECT_GT(reports.front().largest_force, 1e3 * last.balanced_below);
+
+      EXPECT_EQ(r.iterations, q.iterations);
+      for (std::size_t i = 0; i < bed.particles.size(); ++i)
+        EXPECT_EQ(bed.particles.positions[i], quiet.particles.positions[i]);
+    }
 }
 
 /// Algorithm 1 of Gonzalez 2018 as printed (the Gauss-Newton trust region
