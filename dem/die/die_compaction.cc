@@ -244,14 +244,9 @@ namespace compax::dem
   {
     if (!stepper)
       return;
-    if (!progress)
-      {
-        stepper->report_relaxations({}, 0.0);
-        return;
-      }
-    std::ostream *out = progress;
-    stepper->report_relaxations(
-      [out](const RelaxationProgress &p) {
+    RelaxationReport report; // none without a progress stream
+    if (progress)
+      report = [out = progress](const RelaxationProgress &p) {
         std::ostringstream line;
         line << "  relaxing: " << p.evaluations << " residual evaluations in "
              << std::fixed << std::setprecision(0) << p.seconds
@@ -259,8 +254,8 @@ namespace compax::dem
              << std::setprecision(2) << p.largest_force << " N, balanced below "
              << p.balanced_below << " N";
         *out << line.str() << std::endl;
-      },
-      relaxation_report_interval);
+      };
+    stepper->report_relaxations(report, relaxation_report_interval);
   }
 
   LoadStepResult

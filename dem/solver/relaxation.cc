@@ -2,6 +2,7 @@
 
 #include "dem/solver/die_bed_system.h"
 #include "dem/solver/stiffness_scaling.h"
+#include "dem/wall_clock.h"
 
 #include <utility>
 
@@ -38,16 +39,12 @@ namespace compax::dem
                      const int                evaluations)
   {
     result.record(balance, evaluations);
-    if (!report)
+    if (!report || seconds_since(last_report) < report_interval)
       return;
-    const auto now = std::chrono::steady_clock::now();
-    if (std::chrono::duration<double>(now - last_report).count()
-        < report_interval)
-      return;
-    last_report = now;
+    last_report = std::chrono::steady_clock::now();
     RelaxationProgress p;
     p.evaluations    = evaluations;
-    p.seconds        = std::chrono::duration<double>(now - started).count();
+    p.seconds        = seconds_since(started);
     p.largest_force  = balance.largest_force;
     p.balanced_below = balance.balanced_below;
     report(p);
