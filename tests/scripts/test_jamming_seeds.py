@@ -1,0 +1,106 @@
+#!/usr/bin/env python3
+"""scripts/jamming_seeds.py: its sign test against the binomial closed
+form; on a tiny bed, one table row per seed and toughness, paired
+differences equal to the ones recomputed from that table, and bad input
+refused with exit 2 and no output folder.
+
+Usage: test_jamming_seeds.py COMPAX WORKDIR
+"""
+
+import csv
+import pathlib
+import shutil
+import statistics
+import subprocess
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent.parent
+SCRIPT = ROOT / "scripts" / "jamming_seeds.py"
+
+TINY = """subsection Packing
+  set Number of particles = 80
+  set Die diameter        = 2e-3
+end
+subsection Protocol
+  set Final relative density = 0.72
+  set Compaction steps       = 20
+  set Unloading points       =
+end
+subsection Jamming
+  set Protocols             = bonded-path
+  set Compare without bonds = true
+end
+"""
+
+
+def run(compax, *args):
+    return subprocess.run([sys.executable, str(SCRIPT), *map(str, args),
+                           "--compax", str(compax)],
+                          capture_output=True, text=True, check=False)
+
+
+def fail(message):
+    print(f"FAILED: {message}")
+    sys.exit(1)
+
+
+def check_sign_test():
+    """The exact two-sided binomial tail in closed form."""
+    sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+    sys.path.insert(0, str(SCRIPT.parent))
+    from jamming_seeds import sign_test
+    for split, p in (((7, 0), 2 / 2**7),            # 2 * 0.5^7
+                     ((9, 1), 2 * (10 + 1) / 2**10),  # 2 * (C(10,9) + C(10,10)) / 2^10
+                     ((2, 8), 2 * (45 + 10 + 1) / 2**10),
+                     ((5, 5), 1.0)):
+        if abs(sign_test(*split) - p) > 1e-15:
+            fail(f"sign_test{split} = {sign_test(*split)}, closed form {p}")
+
+
+def main():
+    check_sign_test()
+    compax, work = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
+    shutil.rmtree(work, ignore_errors=True)
+    work.mkdir(parents=True)
+    prm = work / "tiny.prm"
+    prm.write_text(TINY)
+
+    out = work / "out"
+    r = run(compax, prm, out, "--seeds", "1,2", "--jobs", "2")
+    if r.returncode != 0:
+        fail(f"exit {r.returncode}: {r.stderr}")
+    with open(out / "jamming_seeds.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    seeds = sorted((row["seed"], float(row["fracture_toughness"]) == 0)
+                   for row in rows)
+    if seeds != [("1", False), ("1", True), ("2", False), ("2", True)]:
+        fail(f"one row per seed and toughness expected, got {seeds}")
+    # Each deposit is its own draw: the two seeds' inputs differ in the seed.
+    for s in ("1", "2"):
+        text = (out / f"seed-{s}" / "input.prm").read_text()
+        if not text.rstrip().endswith(f"set Seed = {s}\nend"):
+            fail(f"seed-{s}/input.prm does not end by setting its seed")
+    by = {(row["seed"], float(row["fracture_toughness"]) == 0):
+          float(row["rho_jammed"]) for row in rows}
+    diffs = [by[(s, True)] - by[(s, False)] for s in ("1", "2")]
+    expected = (f"| material1 | bonded-path | rho_jammed | 2 | "
+                f"{statistics.fmean(diffs):.4g} | {statistics.median(diffs):.4g} | "
+                f"{statistics.stdev(diffs):.3g} |")
+    if expected not in (out / "jamming_seeds.md").read_text():
+        fail(f"paired difference row '{expected}' not in jamming_seeds.md")
+
+    for args, what in (((prm, out), "a non-empty OUTDIR"),
+                       ((prm, work / "bad1", "--seeds", "3-1"), "seeds 3-1"),
+                       ((prm, work / "bad2", "--jobs", "0"), "--jobs 0"),
+                       ((work / "missing.prm", work / "bad3"), "a missing PRM")):
+        r = run(compax, *args)
+        if r.returncode != 2 or "jamming_seeds.py:" not in r.stderr:
+            fail(f"{what}: exit {r.returncode}, stderr '{r.stderr}'")
+    for name in ("bad1", "bad2", "bad3"):
+        if (work / name).exists():
+            fail(f"bad input left the folder {name}")
+    print("OK")
+
+
+if __name__ == "__main__":
+    main()
