@@ -14,13 +14,17 @@ test's p of that split (it needs no assumption on the spread of the
 Eq. 14 fits, whose outliers move the mean).
 
 Usage:
-  scripts/jamming_seeds.py PRM OUTDIR [--seeds 1-10] [--jobs 1]
+  scripts/jamming_seeds.py PRM OUTDIR [--seeds 1-10] [--jobs 1] [--resume]
       [--compax build/apps/compax]
 
 PRM must set `Jamming/Compare without bonds = true` for the pairs (without
 it the table is still written). OUTDIR must not exist or be empty. Each run
-goes to OUTDIR/seed-<N>/ (its input.prm and compax's own output folder
-run/); with --jobs > 1 the runs go in parallel with one thread each.
+goes to OUTDIR/seed-<N>/ (its input.prm, compax.log, exit_code and
+compax's own output folder run/); with --jobs > 1 the runs go in parallel
+with one thread each. --resume continues an interrupted ensemble in its
+OUTDIR: seeds that exited 0 are kept, the folder of any other seed is
+renamed to seed-<N>.interrupted-<time> (nothing is deleted) and the seed
+runs again; a seed whose input.prm differs from what PRM gives is refused.
 Writes OUTDIR/jamming_seeds.csv (`seed` then the columns of jamming.csv) and
 OUTDIR/jamming_seeds.md (the paired differences).
 
@@ -37,6 +41,7 @@ import pathlib
 import statistics
 import subprocess
 import sys
+import time
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 PAIRED = ["rho_c_Z", "Z_c", "theta", "rho_jammed"]
@@ -66,20 +71,31 @@ def parse_seeds(text):
     return sorted(seeds)
 
 
+def seed_input(prm_text, seed):
+    """PRM with Packing/Seed = seed: a later `set` of the same entry
+    overrides the earlier one."""
+    return prm_text + f"\nsubsection Packing\n  set Seed = {seed}\nend\n"
+
+
+def finished(folder):
+    exit_code = folder / "exit_code"
+    return exit_code.is_file() and exit_code.read_text().strip() == "0"
+
+
 def run_seed(compax, prm_text, folder, seed, threads):
-    """Writes folder/input.prm (PRM with Packing/Seed = seed) and runs it."""
+    """Writes folder/input.prm, runs it, and records its exit code."""
     folder.mkdir(parents=True)
-    # A later `set` of the same entry overrides the earlier one.
-    (folder / "input.prm").write_text(
-        prm_text + f"\nsubsection Packing\n  set Seed = {seed}\nend\n")
+    (folder / "input.prm").write_text(seed_input(prm_text, seed))
     env = dict(os.environ)
     if threads:
         env["OMP_NUM_THREADS"] = str(threads)
     with open(folder / "compax.log", "w") as log:
-        return subprocess.run(
+        code = subprocess.run(
             [str(compax), "jamming", "input.prm", "-o", "run"],
             cwd=folder, stdout=log, stderr=subprocess.STDOUT, env=env,
             check=False).returncode
+    (folder / "exit_code").write_text(f"{code}\n")
+    return code
 
 
 def read_rows(folder, seed):
@@ -158,6 +174,7 @@ def main():
     parser.add_argument("outdir", type=pathlib.Path)
     parser.add_argument("--seeds", default="1-10")
     parser.add_argument("--jobs", type=int, default=1)
+    parser.add_argument("--resume", action="store_true")
     parser.add_argument("--compax", type=pathlib.Path,
                         default=ROOT / "build" / "apps" / "compax")
     args = parser.parse_args()
@@ -168,9 +185,11 @@ def main():
         bad_input(f"--compax '{args.compax}' is not a file (build compax first)")
     if args.jobs < 1:
         bad_input(f"--jobs {args.jobs}: at least 1")
-    if args.outdir.exists() and (not args.outdir.is_dir()
-                                 or any(args.outdir.iterdir())):
-        bad_input(f"OUTDIR '{args.outdir}' exists and is not an empty folder")
+    if args.outdir.exists() and not args.outdir.is_dir():
+        bad_input(f"OUTDIR '{args.outdir}' is not a folder")
+    if args.outdir.exists() and any(args.outdir.iterdir()) and not args.resume:
+        bad_input(f"OUTDIR '{args.outdir}' is not empty (--resume continues"
+                  " an interrupted ensemble there)")
     seeds = parse_seeds(args.seeds)
     compax = args.compax.resolve()
     check = subprocess.run([str(compax), "jamming", str(args.prm), "--check"],
@@ -180,11 +199,31 @@ def main():
     prm_text = args.prm.read_text()
     args.outdir.mkdir(parents=True, exist_ok=True)
 
-    threads = 1 if args.jobs > 1 else None
     folders = {s: args.outdir / f"seed-{s}" for s in seeds}
+    for s, folder in folders.items():
+        given = folder / "input.prm"
+        if given.is_file() and given.read_text() != seed_input(prm_text, s):
+            bad_input(f"--resume: '{given}' is another study's (it differs"
+                      f" from PRM '{args.prm}' with seed {s})")
+    kept = [s for s in seeds if finished(folders[s])]
+    to_run = [s for s in seeds if s not in kept]
+    for s in to_run:
+        if folders[s].exists():
+            aside = folders[s].with_name(
+                f"{folders[s].name}.interrupted-{time.strftime('%Y%m%d-%H%M%S')}")
+            folders[s].rename(aside)
+            print(f"jamming_seeds.py: seed {s} did not finish; its folder is"
+                  f" now {aside.name}, running it again", file=sys.stderr)
+    if kept:
+        print(f"jamming_seeds.py: keeping seeds {kept}, finished earlier",
+              file=sys.stderr)
+
+    threads = 1 if args.jobs > 1 else None
+    codes = {s: 0 for s in kept}
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        codes = dict(zip(seeds, pool.map(
-            lambda s: run_seed(compax, prm_text, folders[s], s, threads), seeds)))
+        codes.update(zip(to_run, pool.map(
+            lambda s: run_seed(compax, prm_text, folders[s], s, threads),
+            to_run)))
     failed = [s for s in seeds if codes[s] != 0]
     for s in failed:
         print(f"jamming_seeds.py: seed {s} exited {codes[s]} "

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """scripts/jamming_seeds.py: its sign test against the binomial closed
 form; on a tiny bed, one table row per seed and toughness, paired
-differences equal to the ones recomputed from that table, and bad input
-refused with exit 2 and no output folder.
+differences equal to the ones recomputed from that table, a resumed
+ensemble that keeps finished seeds and sets an interrupted one aside, and
+bad input refused with exit 2 and no output folder.
 
 Usage: test_jamming_seeds.py COMPAX WORKDIR
 """
@@ -88,6 +89,27 @@ def main():
                 f"{statistics.stdev(diffs):.3g} |")
     if expected not in (out / "jamming_seeds.md").read_text():
         fail(f"paired difference row '{expected}' not in jamming_seeds.md")
+
+    # An interrupted ensemble: seed 3 started and never finished.
+    kept_log = (out / "seed-1" / "compax.log").stat().st_mtime_ns
+    (out / "seed-3").mkdir()
+    (out / "seed-3" / "input.prm").write_text(
+        (out / "seed-1" / "input.prm").read_text().replace("Seed = 1", "Seed = 3"))
+    r = run(compax, prm, out, "--seeds", "1-3", "--resume")
+    if r.returncode != 0:
+        fail(f"--resume: exit {r.returncode}: {r.stderr}")
+    if (out / "seed-1" / "compax.log").stat().st_mtime_ns != kept_log:
+        fail("--resume ran a seed that had finished")
+    if len(list(out.glob("seed-3.interrupted-*"))) != 1:
+        fail("--resume did not keep the interrupted seed's folder aside")
+    with open(out / "jamming_seeds.csv", newline="") as f:
+        if sorted({row["seed"] for row in csv.DictReader(f)}) != ["1", "2", "3"]:
+            fail("the resumed table does not hold seeds 1-3")
+    # Another study's folder is refused, not overwritten.
+    (out / "seed-2" / "input.prm").write_text(TINY)
+    r = run(compax, prm, out, "--seeds", "1-3", "--resume")
+    if r.returncode != 2 or "another study" not in r.stderr:
+        fail(f"--resume on another study: exit {r.returncode}, '{r.stderr}'")
 
     for args, what in (((prm, out), "a non-empty OUTDIR"),
                        ((prm, work / "bad1", "--seeds", "3-1"), "seeds 3-1"),
