@@ -35,6 +35,7 @@ stderr; the table holds the others), 2 on bad input.
 import argparse
 import concurrent.futures
 import csv
+import io
 import math
 import os
 import pathlib
@@ -104,6 +105,14 @@ def read_rows(folder, seed):
         return []
     with open(path, newline="") as f:
         return [dict(row, seed=str(seed)) for row in csv.DictReader(f)]
+
+
+def write_whole(path, text):
+    """Writes a table next to `path` and renames it there: a reader never
+    sees half a file, and a crash leaves the earlier one."""
+    partial = path.with_name(f".{path.name}.partial")
+    partial.write_text(text)
+    os.replace(partial, path)
 
 
 def number(text):
@@ -231,13 +240,16 @@ def main():
 
     rows = [row for s in seeds for row in read_rows(folders[s], s)]
     if rows:
-        columns = ["seed"] + [c for c in rows[0] if c != "seed"]
-        with open(args.outdir / "jamming_seeds.csv", "w", newline="") as f:
-            writer = csv.DictWriter(f, fieldnames=columns)
-            writer.writeheader()
-            writer.writerows(rows)
+        table = io.StringIO()
+        writer = csv.DictWriter(
+            table, fieldnames=["seed"] + [c for c in rows[0] if c != "seed"],
+            lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(rows)
+        write_whole(args.outdir / "jamming_seeds.csv", table.getvalue())
     pairs = paired_differences(rows)
-    (args.outdir / "jamming_seeds.md").write_text(
+    write_whole(
+        args.outdir / "jamming_seeds.md",
         f"# `compax jamming` on {len(seeds)} deposits\n\n"
         f"Parameters: `{args.prm}`, seeds {args.seeds}"
         f"{', failed: ' + str(failed) if failed else ''}.\n\n"
