@@ -124,7 +124,7 @@ def number(text):
 
 
 def paired_differences(rows):
-    """{(material, protocol, column): [(seed, K_Ic=0 minus K_Ic>0), ...]}."""
+    """{(material, protocol, column): [K_Ic=0 minus K_Ic>0, one per seed]}."""
     by_case = {}
     for row in rows:
         toughness = number(row.get("fracture_toughness"))
@@ -133,15 +133,14 @@ def paired_differences(rows):
         key = (row["material"], row["protocol"], row["seed"])
         by_case.setdefault(key, {})["none" if toughness == 0 else "bonded"] = row
     pairs = {}
-    for (material, protocol, seed), case in sorted(by_case.items()):
+    for (material, protocol, _), case in sorted(by_case.items()):
         if "none" not in case or "bonded" not in case:
             continue
         for column in PAIRED:
             a = number(case["none"].get(column))
             b = number(case["bonded"].get(column))
             if a is not None and b is not None:
-                pairs.setdefault((material, protocol, column), []).append(
-                    (int(seed), a - b))
+                pairs.setdefault((material, protocol, column), []).append(a - b)
     return pairs
 
 
@@ -163,8 +162,7 @@ def summary_table(pairs):
         " | sign test p |",
         "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |",
     ]
-    for (material, protocol, column), values in sorted(pairs.items()):
-        d = [v for _, v in values]
+    for (material, protocol, column), d in sorted(pairs.items()):
         sd = statistics.stdev(d) if len(d) > 1 else float("nan")
         se = sd / math.sqrt(len(d)) if len(d) > 1 else float("nan")
         positive, negative = sum(v > 0 for v in d), sum(v < 0 for v in d)
