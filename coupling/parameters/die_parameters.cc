@@ -176,8 +176,8 @@ namespace compax::coupling
                       "uninterrupted one; on the loose path this changes "
                       "which balanced state the bed reaches (1500 spheres "
                       "of Material 1: first 0.5 MPa at rho 0.6114 with "
-                      "checkpoints every 10 steps, 0.6163 without; README, "
-                      "The loose regime). While "
+                      "checkpoints every 10 steps, 0.6163 without; "
+                      "doc/loose_regime.md). While "
                       "a run is in progress its output is staged in the "
                       "hidden folder .<OUTDIR>.partial-<pid> next to OUTDIR: "
                       "after a kill the checkpoint is there; after a stop "
@@ -219,10 +219,12 @@ namespace compax::coupling
       "compaction step from the deposit on ends in a converged state to "
       "which the history update of Eq. 13 applies (Gonzalez 2018, "
       "Algorithm 1), so bridges form from the first resolved contact force "
-      "on. While the punches carry less than 0.5 MPa a step is relaxed by "
-      "FIRE at fixed internal variables to 1e-2 of the mean contact force "
-      "(Newton has no stiffness along the mechanisms of an unjammed bed); "
-      "above, the trust-region Newton solves to the Solver tolerances. "
+      "on. While the punches carry less than 0.5 MPa a step is relaxed at "
+      "fixed internal variables (Newton has no stiffness along the "
+      "mechanisms of an unjammed bed; Unjammed equilibrium says by which "
+      "minimiser and to which tolerance: by default L-BFGS to the Solver "
+      "tolerances); above, the trust-region Newton solves to the Solver "
+      "tolerances. "
       "Contact forces below 1e-2 x 0.5 MPa on a mean cross-section pi R^2 "
       "(7.6e-4 N for R = 220 um) are not resolved: the coordination number "
       "counts the contacts above, and with History update = resolved-forces "
@@ -256,18 +258,18 @@ namespace compax::coupling
       "(default): the same problem and tolerances, minimised by L-BFGS "
       "instead of FIRE (3.6x fewer residual evaluations and 7x less time "
       "to rho = 0.70 on the 6512-sphere Material 1 bed, 1.7x on 2000 "
-      "spheres; see README, The loose regime). least-squares: no "
+      "spheres; see doc/loose_regime.md). least-squares: no "
       "relaxation; Gonzalez 2018 Algorithm 1 as printed, a trust region on "
       "the least-squares problem min |F|^2 whose step solves the "
       "Gauss-Newton model, converged when the step moves no particle "
       "farther than Solver/Step tolerance (Error = |s| < TOL1) or when "
-      "balanced; on the loose beds measured (README, The loose regime) "
+      "balanced; on the loose beds measured (doc/loose_regime.md) "
       "contacts opening and closing hold the trust radius at the overlap "
       "scale and the solve ends when a rejection cuts it below TOL1, so "
       "its converged states may keep force chains (die.csv's residual "
       "shows the imbalance left). The loose steps crawl at that radius: "
       "raise Solver/Maximum iterations (2000 for the 1500-sphere beds of "
-      "the README's measurement).");
+      "doc/loose_regime.md's measurement).");
     declare_history_update(prm,
                            "1e-2 x 0.5 MPa on a mean cross-section pi R^2, "
                            "7.6e-4 N for R = 220 um");
@@ -284,8 +286,8 @@ namespace compax::coupling
       "like a momentum (the predictor of the jammed steps, where it only "
       "saves iterations). affine: the heights are mapped with the punch "
       "gap, the uniform strain from which the RVE's cell starts each step. "
-      "Measured on 1500 spheres of Material 1 (README, The loose "
-      "regime): affine jams 0.005 earlier and runs 15 % faster.");
+      "Measured on 1500 spheres of Material 1 (doc/loose_regime.md): "
+      "affine jams 0.005 earlier and runs 15 % faster.");
     prm.declare_entry("Maximum ejection steps",
                       "40",
                       dealii::Patterns::Integer(1, 100000),

@@ -284,18 +284,19 @@ namespace compax::coupling
       input::non_negative(),
       "Pa",
       "Below this mean compressive stress -tr(sigma)/3 a step "
-      "is relaxed by FIRE (the loose cell has no stiffness for "
-      "Newton), as Consolidation says; 0: every step by "
-      "Newton.");
+      "is relaxed at fixed internal variables (the loose cell has no "
+      "stiffness for Newton), as Consolidation and Unjammed equilibrium "
+      "say; 0: every step by Newton.");
     prm.declare_entry(
       "Consolidation",
       consolidation,
       dealii::Patterns::Selection("none|frozen-history"),
       "What happens below the Jamming pressure (as compax die's "
       "Protocol/Consolidation). none (the bonded path): a sub-step is "
-      "relaxed by FIRE at fixed internal variables to 1e-2 of the mean "
-      "contact force, and that relaxed state is a converged state to which "
-      "the history update of Eq. 13 applies; contact forces below 1e-2 x "
+      "relaxed at fixed internal variables (by default L-BFGS to the "
+      "Solver tolerances, see Unjammed equilibrium), and that relaxed "
+      "state is a converged state to which the history update of Eq. 13 "
+      "applies; contact forces below 1e-2 x "
       "Jamming pressure on a mean cross-section pi R^2 (7.6e-4 N for R = "
       "220 um and 0.5 MPa) grow no plastic radius and no bridge (History "
       "update = resolved-forces); once a "
