@@ -2,8 +2,9 @@
 """Runs one `compax jamming` study on several deposits and pairs the results.
 
 One deposit is one draw: the jamming onset of a loose bed is chaotic (the
-rounding of a force sum moves it, README "One measurement is one draw"), so
-whether K_Ic = 0 jams later than K_Ic > 0 cannot be read from one seed.
+rounding of a force sum moves it; doc/benchmarks.md, "One measurement is
+one draw"), so whether K_Ic = 0 jams later than K_Ic > 0 cannot be read
+from one seed.
 This script runs the study of a parameter file once per `Packing/Seed`,
 collects every `jamming.csv` into one table with a `seed` column, and pairs
 the two toughnesses of each seed and protocol: the difference

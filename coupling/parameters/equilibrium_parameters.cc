@@ -63,8 +63,8 @@ namespace compax::coupling
           "are not taken as plastic deformation. every-contact: Eq. 13 "
           "applies at every positive overlap, however small its force, so "
           "the touching contacts of a loose bed grow plastic radii and "
-          "bridges from the first converged state on (see README, The "
-          "loose regime, for the measured difference).");
+          "bridges from the first converged state on (see "
+          "doc/loose_regime.md for the measured difference).");
   }
 
   bool

@@ -20,7 +20,7 @@ namespace compax::dem
      * volume_in_die_region()): unbiased where the walls order the spheres
      * in layers, whose centres a boundary at a fixed distance from a wall
      * otherwise cuts unevenly (+0.018 in solid fraction at die density
-     * 0.70 in the 6512-sphere die with centres; README).
+     * 0.70 in the 6512-sphere die with centres; doc/loose_regime.md).
      */
     volume_fraction,
     /// Each sphere whose centre lies inside, whole; the rest not at all.

@@ -30,8 +30,8 @@ namespace compax::dem
    * contacts the model does not see are rejected, the trust radius stays
    * at the scale of the overlaps, and every step lies on its boundary; the
    * Error then falls below TOL1 when a rejection has cut the radius below
-   * it, on a state that need not be balanced (README, What ends a loose
-   * solve of Algorithm 1). Such a state is converged in Algorithm 1's
+   * it, on a state that need not be balanced (doc/loose_regime.md, What ends a
+   * loose solve of Algorithm 1). Such a state is converged in Algorithm 1's
    * sense, and Eq. (13) applies to it (LoadStepper with
    * UnjammedEquilibrium::least_squares): the printed protocol's loose
    * states, beside the balanced ones of the energy minimisers.

@@ -25,7 +25,7 @@ namespace compax::dem
      * predictor moves every particle on by the rearrangement of the last
      * sub-step, like a momentum, and the affine one starts each sub-step
      * from the punch's uniform strain, as the RVE's cell mapping does.
-     * Measured (README, The loose regime): the secant predictor jams a
+     * Measured (doc/loose_regime.md): the secant predictor jams a
      * 1500-sphere Material 1 bed 0.005 later and costs 17 % more time.
      */
     bool secant_predictor_unjammed = true;
