@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """scripts/jamming_seeds.py: its sign test against the binomial closed
-form; on a tiny bed, one table row per seed and toughness, paired
+form, fits equal to round-off taken as ties; on a tiny bed, one table row per seed and toughness, paired
 differences equal to the ones recomputed from that table, a resumed
 ensemble that keeps finished seeds and sets an interrupted one aside, and
 bad input refused with exit 2 and no output folder.
@@ -56,6 +56,14 @@ def check_sign_test():
                      ((5, 5), 1.0)):
         if abs(sign_test(*split) - p) > 1e-15:
             fail(f"sign_test{split} = {sign_test(*split)}, closed form {p}")
+    # Fits that agree to their round-off are a tie, not a sign.
+    from jamming_seeds import paired_difference
+    for none, bonded, expected in ((0.6147672459, 0.6147672457, 0.0),
+                                   (0.6157, 0.6152, 0.6157 - 0.6152),
+                                   (4.23, 4.17, 4.23 - 4.17)):
+        if paired_difference(none, bonded) != expected:
+            fail(f"paired_difference({none}, {bonded}) = "
+                 f"{paired_difference(none, bonded)}, expected {expected}")
 
 
 def main():
