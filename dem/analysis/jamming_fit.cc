@@ -30,7 +30,9 @@ namespace compax::dem
     try
       {
         const CoordinationFit fit = fit_coordination(rho, Z);
-        if (fit.on_search_edge)
+        // A coordination number is not negative: a power law whose Z_c is
+        // describes the data, not a jamming point.
+        if (fit.on_search_edge || fit.Z_c < 0.0)
           return std::nullopt;
         return fit;
       }

@@ -34,9 +34,11 @@ namespace compax::dem
    * Eq. (14), Z = Z_c + Z_0 (rho - rho_c_Z)^theta, fitted to the
    * jammed_states() (below the resolution the bed carries nothing the
    * contact law resolves). Empty with fewer than five jammed states, when the
-   * fit fails, or when its optimum stands on the edge of the searched range
+   * fit fails, when its optimum stands on the edge of the searched range
    * (CoordinationFit::on_search_edge: no state near the onset, as after a
-   * consolidation that jumps from a loose bed to a loaded one).
+   * consolidation that jumps from a loose bed to a loaded one), or when its
+   * Z_c is negative (no coordination number: the power law then fits a
+   * path that rises from a state far below its own onset).
    */
   std::optional<CoordinationFit>
   fit_jamming(const std::vector<CompactionState> &states,

@@ -93,6 +93,30 @@ TEST(CurveFits, JammingFitUsesOnlyStatesAboveThePressureResolution)
   EXPECT_FALSE(fit_jamming(states, resolution).has_value());
 }
 
+TEST(CurveFits, JammingFitWithANegativeCriticalCoordinationIsNoFit)
+{
+  // Eq. 14 with Z_c = -6.2 (the shape a 6512-sphere path without bridges
+  // gave, stop 43) is recovered by fit_coordination, but no coordination
+  // number is negative: fit_jamming reports no jamming point. The same
+  // curve shifted to Z_c = +1.8 is one.
+  const double Z_0 = 19.0, rho_c = 0.55, theta = 0.2, resolution = 5e3;
+  for (const double Z_c : {-6.2, 1.8})
+    {
+      std::vector<CompactionState> states;
+      std::vector<double>          rho, Z;
+      for (double r : densities(0.625, 0.80, 25))
+        {
+          states.push_back(
+            {r, 1e8 * (r - 0.6), Z_c + Z_0 * std::pow(r - rho_c, theta)});
+          rho.push_back(r);
+          Z.push_back(states.back().coordination_number);
+        }
+      const auto power_law = fit_coordination(rho, Z);
+      EXPECT_NEAR(power_law.Z_c, Z_c, 1e-3);
+      EXPECT_EQ(fit_jamming(states, resolution).has_value(), Z_c > 0.0);
+    }
+}
+
 TEST(CurveFits, PunchPressurePowerLawOfEquation15WithNoise)
 {
   const double        K_p = 480e6, beta = 2.1, rho_c = 0.6;
