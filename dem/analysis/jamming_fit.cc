@@ -30,8 +30,8 @@ namespace compax::dem
     try
       {
         const CoordinationFit fit = fit_coordination(rho, Z);
-        // A coordination number is not negative: a power law whose Z_c is
-        // describes the data, not a jamming point.
+        // A coordination number is never negative: a power law with
+        // Z_c < 0 describes the data, not a jamming point.
         if (fit.on_search_edge || fit.Z_c < 0.0)
           return std::nullopt;
         return fit;
