@@ -117,6 +117,22 @@ namespace compax::dem
              : 0.0;
   }
 
+  /**
+   * A contact's share of the bonding surface of Gonzalez 2018 Sec. 5.6,
+   * a_p^2 [m^2]: the area plastic loading created, while the contact
+   * touches (contact radius a > 0 in @p response, the law's response at the
+   * current overlap). A pair that has parted keeps a_p as its history but
+   * bonds no more.
+   */
+  inline double
+  bonding_area_squared(const ParticleLaw     &law,
+                       const ContactHistory  &history,
+                       const ContactResponse &response)
+  {
+    const double a_p = plastic_radius(law, history);
+    return response.contact_radius > 0.0 ? a_p * a_p : 0.0;
+  }
+
   /// The bonded law of a contact that holds it (std::bad_variant_access
   /// otherwise), for what only that law defines (a_p, breakage overlap).
   inline const BondedElastoplasticLaw &

@@ -15,15 +15,15 @@ namespace compax::dem
     const auto &p = bed.particles;
     for (const PairContact &c : bed.contacts.pairs)
       {
-        const double P
-          = law_response(c.law, pair_overlap(p, c), c.history).force;
+        const ContactResponse r
+          = law_response(c.law, pair_overlap(p, c), c.history);
+        const double P = r.force;
         if (std::abs(P) > resolution)
           ++loaded;
         m.n_tensile += P < 0.0;
         m.n_compressive += P > 0.0;
         m.n_bonds += bonded(c.law, c.history);
-        const double a_p = plastic_radius(c.law, c.history);
-        ap2 += a_p * a_p;
+        ap2 += bonding_area_squared(c.law, c.history, r);
       }
     for (const double R : p.radii)
       r2 += R * R;

@@ -12,9 +12,11 @@ namespace compax::dem
     /// Mean mechanical coordination number: 2 x (particle pairs carrying a
     /// non-zero force) / N [-]; wall contacts are not counted.
     double coordination_number = 0.0;
-    /// Bonding surface parameter A_b = sum a_p^2 / sum R_i^2 over particle
-    /// pairs (Gonzalez 2018 Sec. 5.6: sum a_p^2 / (R^2 N_p) when
-    /// monodisperse) [-].
+    /// Bonding surface parameter A_b = sum a_p^2 / sum R_i^2 over the
+    /// particle pairs that touch (contact radius a > 0; Gonzalez 2018
+    /// Sec. 5.6: sum a_p^2 / (R^2 N_p) when monodisperse) [-]. A pair that
+    /// has parted keeps its a_p as history but bonds no more, so A_b falls
+    /// as contacts open on unloading and ejection (the paper's Fig. 19).
     double bonding_surface = 0.0;
     /// Particle pairs with an intact solid bridge (a_B > 0).
     std::size_t n_bonds = 0;

@@ -17,15 +17,15 @@ namespace compax::dem
     double                                               ap2 = 0.0, r2 = 0.0;
     for (const PeriodicContact &c : bed.contacts.pairs)
       {
-        const double a_p = plastic_radius(c.law, c.history);
-        ap2 += a_p * a_p;
         m.n_bonds += bonded(c.law, c.history);
         const double gamma
           = p.radii[c.i] + p.radii[c.j] - branch_vector(p, bed.cell, c).norm();
-        if (a_p == 0.0 && gamma <= 0.0)
+        if (plastic_radius(c.law, c.history) == 0.0 && gamma <= 0.0)
           continue;
-        if (periodic_contact_response(c, gamma, ContactBranch::current).force
-            == 0.0)
+        const ContactResponse r
+          = periodic_contact_response(c, gamma, ContactBranch::current);
+        ap2 += bonding_area_squared(c.law, c.history, r);
+        if (r.force == 0.0)
           continue;
         network.emplace_back(c.i, c.j);
         ++loaded[c.i];

@@ -19,8 +19,8 @@ namespace compax::dem
     double coordination_without_rattlers = 0.0;
     /// Rattlers / N [-].
     double rattler_fraction = 0.0;
-    /// A_b = sum a_p^2 / sum R_i^2 (Gonzalez 2018 Sec. 5.6, the die's
-    /// definition) [-].
+    /// A_b = sum a_p^2 / sum R_i^2 over the pairs that touch (Gonzalez
+    /// 2018 Sec. 5.6, the die's definition, BedMeasures) [-].
     double bonding_surface = 0.0;
     /// Contacts with an intact solid bridge (a_B > 0).
     std::size_t n_bonds = 0;
