@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """scripts/jamming_seeds.py: its sign test against the binomial closed
-form, fits equal to round-off taken as ties; on a tiny bed, one table row per seed and toughness, paired
-differences equal to the ones recomputed from that table, a resumed
-ensemble that keeps finished seeds and sets an interrupted one aside, and
-bad input refused with exit 2 and no output folder.
+form, fits equal to round-off taken as ties; on a tiny bed, one table row
+per seed and toughness, paired differences equal to the ones recomputed
+from that table, a resumed ensemble that keeps finished seeds and sets an
+interrupted one aside, and bad input refused with exit 2 and no output
+folder.
 
 Usage: test_jamming_seeds.py COMPAX WORKDIR
 """
