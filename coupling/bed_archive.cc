@@ -3,7 +3,9 @@
 #include "coupling/history_columns.h"
 #include "coupling/particle_archive.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace compax::coupling
 {
@@ -42,12 +44,13 @@ namespace compax::coupling
     // Columns: the contact's key (i, j) or (i, wall), then its internal
     // variables.
     std::vector<double> pairs, walls;
-    for (const auto &c : bed.contacts.pairs)
+    bed.contacts.for_each_kept_pair([&](const dem::PairContact &c) {
       if (dem::has_history(c.history))
         {
           pairs.insert(pairs.end(), {double(c.i), double(c.j)});
           append_history(pairs, c.history);
         }
+    });
     for (const auto &c : bed.contacts.walls)
       if (dem::has_history(c.history))
         {
@@ -106,6 +109,12 @@ namespace compax::coupling
         bed.contacts.pairs.push_back(
           {i, j, law, history_from_columns(&h[k + 2], hc - 2, law)});
       }
+    // Active and dormant pairs were saved one list after the other.
+    std::sort(bed.contacts.pairs.begin(),
+              bed.contacts.pairs.end(),
+              [](const dem::PairContact &a, const dem::PairContact &b) {
+                return std::make_pair(a.i, a.j) < std::make_pair(b.i, b.j);
+              });
     const auto        w  = archive.read_array(group + "/wall_histories");
     const std::size_t wc = columns_of(archive, group + "/wall_histories");
     for (std::size_t k = 0; k + wc <= w.size(); k += wc)

@@ -189,6 +189,15 @@ namespace compax::dem
   }
 
   double
+  BondedElastoplasticLaw::separation_reach(const ContactHistory &history,
+                                           const ContactContext &) const
+  {
+    if (a_p(history) == 0.0)
+      return 0.0; // virgin: no force apart
+    return std::max(-breakage_overlap(a_p(history)), 0.0);
+  }
+
+  double
   BondedElastoplasticLaw::unloading_stiffness(const double          gamma,
                                               const ContactHistory &history,
                                               const ContactContext &) const

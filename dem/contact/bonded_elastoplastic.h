@@ -141,6 +141,13 @@ namespace compax::dem
                       const ContactHistory &history,
                       const ContactContext &context) const override;
 
+    /// -breakage_overlap(a_p) where that is a separation, else 0: the
+    /// contact radius, and with it the force, vanishes below the breakage
+    /// overlap, bridge or none.
+    double
+    separation_reach(const ContactHistory &history,
+                     const ContactContext &context) const override;
+
     std::string
     name() const override
     {

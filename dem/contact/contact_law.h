@@ -2,6 +2,7 @@
 
 #include "dem/contact/contact_response.h"
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,22 @@ namespace compax::dem
       (void)history;
       (void)context;
       return false;
+    }
+
+    /**
+     * The largest separation -gamma [m] at which a contact with this
+     * history can still carry a force: farther apart, its force and
+     * stiffness are exactly zero. A particle solver sets such pairs aside
+     * while they stay that far apart (ContactSet::dormant). Infinite by
+     * default, so that a law that does not declare it is never set aside.
+     */
+    virtual double
+    separation_reach(const ContactHistory &history,
+                     const ContactContext &context) const
+    {
+      (void)history;
+      (void)context;
+      return std::numeric_limits<double>::infinity();
     }
 
     /// The internal variables the law keeps, slot k of ContactHistory

@@ -90,6 +90,14 @@ namespace compax::dem
       law);
   }
 
+  /// ContactLaw::separation_reach() of the law [m].
+  inline double
+  separation_reach(const ParticleLaw &law, const ContactHistory &history)
+  {
+    return std::visit(
+      [&](const auto &l) { return l.separation_reach(history, {}); }, law);
+  }
+
   /// ContactLaw::bonded(): whether the contact holds a solid bridge.
   inline bool
   bonded(const ParticleLaw &law, const ContactHistory &history)

@@ -99,6 +99,14 @@ namespace compax::dem
                       const ContactHistory &history,
                       const ContactContext &context) const override;
 
+    /// 0: every branch, the adhesive one included, ends at contact.
+    double
+    separation_reach(const ContactHistory &,
+                     const ContactContext &) const override
+    {
+      return 0.0;
+    }
+
     std::string
     name() const override
     {

@@ -13,18 +13,17 @@ namespace compax::dem
     std::size_t loaded = 0;
     double      ap2 = 0.0, r2 = 0.0;
     const auto &p = bed.particles;
-    for (const PairContact &c : bed.contacts.pairs)
-      {
-        const ContactResponse r
-          = law_response(c.law, pair_overlap(p, c), c.history);
-        const double P = r.force;
-        if (std::abs(P) > resolution)
-          ++loaded;
-        m.n_tensile += P < 0.0;
-        m.n_compressive += P > 0.0;
-        m.n_bonds += bonded(c.law, c.history);
-        ap2 += bonding_area_squared(c.law, c.history, r);
-      }
+    bed.contacts.for_each_kept_pair([&](const PairContact &c) {
+      const ContactResponse r
+        = law_response(c.law, pair_overlap(p, c), c.history);
+      const double P = r.force;
+      if (std::abs(P) > resolution)
+        ++loaded;
+      m.n_tensile += P < 0.0;
+      m.n_compressive += P > 0.0;
+      m.n_bonds += bonded(c.law, c.history);
+      ap2 += bonding_area_squared(c.law, c.history, r);
+    });
     for (const double R : p.radii)
       r2 += R * R;
     if (p.size() > 0)

@@ -126,7 +126,7 @@ namespace compax::dem
   {
     const ParticleSystem &p = bed.particles;
     ParticleSnapshot      snapshot(p);
-    for (const PairContact &c : bed.contacts.pairs)
+    bed.contacts.for_each_kept_pair([&](const PairContact &c) {
       snapshot.add_contact(
         c.i,
         c.j,
@@ -134,6 +134,7 @@ namespace compax::dem
         law_response(c.law, pair_overlap(p, c), c.history).force,
         c.law,
         c.history);
+    });
     snapshot.write(file);
   }
 

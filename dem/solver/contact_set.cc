@@ -28,10 +28,24 @@ namespace compax::dem
                             const ContactModel   &model)
   {
     grid.find_pairs(particles.positions, particles.radii, skin(), candidates);
+    // A pair apart by more than the skin plus its reach stays beyond its
+    // reach until the next build (moved_too_far()). The reach gets a
+    // relative margin of 1e-6, far above the rounding of the law's own
+    // test, so that a dormant pair's force would be exactly zero.
+    old_dormant.swap(dormant);
+    dormant.clear();
+    const auto set_aside = [&](const PairContact &c) {
+      const double reach = separation_reach(c.law, c.history) * (1.0 + 1e-6);
+      if (!(-pair_overlap(particles, c) > skin() + reach))
+        return false;
+      dormant.push_back(c);
+      return true;
+    };
     merge_candidates(
       candidates,
       pairs,
       old_pairs,
+      old_dormant,
       [](const PairContact &c) { return ParticlePair(c.i, c.j); },
       [&](const ParticlePair &ij) {
         const auto [i, j] = ij;
@@ -42,7 +56,8 @@ namespace compax::dem
                                           particles.materials[j],
                                           particles.radii[j]),
                            ContactHistory{}};
-      });
+      },
+      set_aside);
 
     // The walls within the skin of each particle, in order (i, wall).
     wall_candidates.clear();
@@ -81,6 +96,9 @@ namespace compax::dem
   {
     BondChanges changes
       = VerletList::update_histories(particles, die, resolution);
+    // Beyond its reach a bonded pair's bridge breaks (a = 0), as it would
+    // in `pairs`.
+    update_histories_of(dormant, particles, die, resolution, changes);
     update_histories_of(walls, particles, die, resolution, changes);
     return changes;
   }

@@ -68,10 +68,34 @@ namespace compax::dem
   public:
     using VerletList::VerletList;
 
+    /// The pairs of the residual and the stiffness: the candidates within
+    /// the skin, and the pairs with a history that may still act.
     std::vector<PairContact> pairs;
     std::vector<WallContact> walls;
+    /**
+     * Dormant pairs: pairs with a history (a plastic radius, a largest
+     * overlap) that had parted by more than the skin plus their law's
+     * separation_reach() at the last build. Until the next build no
+     * particle moves half a skin, so each carries exactly no force and no
+     * stiffness, and the residual and the stiffness skip them. A build
+     * gives a pair back to `pairs` with its history once it comes nearer.
+     * Sorted by (i, j), like `pairs`.
+     */
+    std::vector<PairContact> dormant;
 
-    /// VerletList::update_histories() of the pairs and of the walls.
+    /// Calls @p f on every pair the set keeps: `pairs`, then `dormant`.
+    template <typename F>
+    void
+    for_each_kept_pair(F &&f) const
+    {
+      for (const PairContact &c : pairs)
+        f(c);
+      for (const PairContact &c : dormant)
+        f(c);
+    }
+
+    /// VerletList::update_histories() of the pairs, dormant ones
+    /// included, and of the walls.
     BondChanges
     update_histories(const ParticleSystem &particles,
                      const DieWalls       &die,
@@ -96,6 +120,7 @@ namespace compax::dem
     std::vector<ParticlePair> candidates;
     std::vector<WallKey>      wall_candidates;
     std::vector<PairContact>  old_pairs;
+    std::vector<PairContact>  old_dormant;
     std::vector<WallContact>  old_walls;
     /// The walls' coordinates at the last build [m].
     double reference_walls[n_walls] = {0.0, 0.0, 0.0};

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -150,6 +151,8 @@ namespace compax::dem
     /// kept between calls so that a residual allocates nothing.
     std::vector<Eigen::VectorXd> thread_forces;
     std::vector<LoadedContacts>  thread_loaded;
+    /// Thread t sums pairs thread_first[t] to thread_first[t + 1] - 1.
+    std::vector<std::size_t> thread_first;
   };
 
   template <typename BedType>
@@ -222,6 +225,28 @@ namespace compax::dem
     thread_loaded.assign(threads, LoadedContacts{});
     for (Eigen::VectorXd &f : thread_forces)
       f.resize(size);
+    // Thread t sums the pairs whose first particle is in the t-th share of
+    // the particles (the list is sorted by it), so that which thread sums a
+    // pair, and so the rounding, does not depend on the other pairs listed:
+    // the same with or without pairs that carry nothing (a list's dormant
+    // pairs, a resumed run's fresh list). The boundaries only ever grow,
+    // so every pair is summed once even in an unsorted list.
+    const auto &pairs = bed.contacts.pairs;
+    thread_first.assign(threads + 1, pairs.size());
+    thread_first[0] = 0;
+    for (int t = 1; t < threads; ++t)
+      {
+        const auto first_particle = static_cast<std::uint32_t>(
+          bed.particles.size() * static_cast<std::size_t>(t) / threads);
+        const auto split = std::partition_point(pairs.begin(),
+                                                pairs.end(),
+                                                [&](const auto &c) {
+                                                  return c.i < first_particle;
+                                                });
+        thread_first[t]
+          = std::max(thread_first[t - 1],
+                     static_cast<std::size_t>(split - pairs.begin()));
+      }
 #pragma omp parallel num_threads(threads)
     {
       const int        t  = omp_get_thread_num();
@@ -230,12 +255,11 @@ namespace compax::dem
       // Thread-local counters: neighbouring slots of one vector would
       // share a cache line and serialise the threads.
       LoadedContacts loaded_t;
-      const auto     n = static_cast<std::int64_t>(bed.contacts.pairs.size());
-#pragma omp for schedule(static)
-      for (std::int64_t k = 0; k < n; ++k)
+      for (std::size_t k = thread_first[t]; k < thread_first[t + 1]; ++k)
         add_pair_terms<false>(bed, k, response, pattern, Ft, nullptr, loaded_t);
       thread_loaded[t] = loaded_t;
-      // The loop's implicit barrier: every thread's vector is complete.
+#pragma omp barrier
+      // Every thread's vector is complete.
 #pragma omp for schedule(static)
       for (Eigen::Index i = 0; i < size; ++i)
         for (int s = 0; s < threads; ++s)

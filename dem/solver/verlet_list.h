@@ -25,7 +25,7 @@ namespace compax::dem
    * the last build; a rebuild keeps the history of every surviving
    * contact, and keeps a contact that has left the list if it has a
    * history: plastic deformation is permanent even when two particles
-   * separate.
+   * separate (the die's ContactSet keeps the far ones aside, dormant).
    *
    * `Set` derives from VerletList<Set, Boundary>, holds `pairs` and says
    * when the particles moved too far (moved_too_far()) and how the
@@ -150,12 +150,73 @@ namespace compax::dem
   /**
    * The rebuild of a list that keeps histories: merges the sorted keys of
    * the new candidates into `contacts`, the sorted contacts of the last
-   * build. A candidate already listed keeps its contact (law and internal
-   * variables), a new one is `make(key)`, and a contact that left the
-   * candidates stays if it has a history. `key(contact)` orders the
-   * contacts as the candidates; `old` is scratch, kept to avoid
+   * build, and `asleep`, the sorted contacts set aside then (disjoint from
+   * `contacts`). A candidate already kept keeps its contact (law and
+   * internal variables), a new one is `make(key)`, and a contact that left
+   * the candidates stays if it has a history: in `contacts`, unless
+   * `set_aside(contact)` takes it (and returns true). `key(contact)` orders
+   * the contacts as the candidates; `old` is scratch, kept to avoid
    * allocations.
    */
+  template <typename Contact,
+            typename Key,
+            typename KeyOf,
+            typename Make,
+            typename SetAside>
+  void
+  merge_candidates(const std::vector<Key>     &candidates,
+                   std::vector<Contact>       &contacts,
+                   std::vector<Contact>       &old,
+                   const std::vector<Contact> &asleep,
+                   const KeyOf                &key,
+                   const Make                 &make,
+                   const SetAside             &set_aside)
+  {
+    old.swap(contacts);
+    contacts.clear();
+    contacts.reserve(candidates.size() + 16);
+    std::size_t k = 0, s = 0;
+    // The next kept contact in key order, from either list, and its removal.
+    const auto front = [&]() -> const Contact * {
+      if (k < old.size()
+          && (s == asleep.size() || key(old[k]) < key(asleep[s])))
+        return &old[k];
+      return s < asleep.size() ? &asleep[s] : nullptr;
+    };
+    const auto pop = [&](const Contact *c) {
+      if (k < old.size() && c == &old[k])
+        ++k;
+      else
+        ++s;
+    };
+    const auto keep_apart = [&](const Contact &c) {
+      if (has_history(c.history) && !set_aside(c))
+        contacts.push_back(c);
+    };
+    for (const Key &candidate : candidates)
+      {
+        const Contact *c = front();
+        for (; c != nullptr && key(*c) < candidate; c = front())
+          {
+            keep_apart(*c);
+            pop(c);
+          }
+        if (c != nullptr && key(*c) == candidate)
+          {
+            contacts.push_back(*c);
+            pop(c);
+          }
+        else
+          contacts.push_back(make(candidate));
+      }
+    for (const Contact *c = front(); c != nullptr; c = front())
+      {
+        keep_apart(*c);
+        pop(c);
+      }
+  }
+
+  /// merge_candidates() of a list that sets nothing aside.
   template <typename Contact, typename Key, typename KeyOf, typename Make>
   void
   merge_candidates(const std::vector<Key> &candidates,
@@ -164,25 +225,12 @@ namespace compax::dem
                    const KeyOf            &key,
                    const Make             &make)
   {
-    old.swap(contacts);
-    contacts.clear();
-    contacts.reserve(candidates.size() + 16);
-    std::size_t k = 0;
-    for (const Key &candidate : candidates)
-      {
-        while (k < old.size() && key(old[k]) < candidate)
-          {
-            if (has_history(old[k].history))
-              contacts.push_back(old[k]);
-            ++k;
-          }
-        if (k < old.size() && key(old[k]) == candidate)
-          contacts.push_back(old[k++]);
-        else
-          contacts.push_back(make(candidate));
-      }
-    for (; k < old.size(); ++k)
-      if (has_history(old[k].history))
-        contacts.push_back(old[k]);
+    merge_candidates(candidates,
+                     contacts,
+                     old,
+                     std::vector<Contact>{},
+                     key,
+                     make,
+                     [](const Contact &) { return false; });
   }
 } // namespace compax::dem

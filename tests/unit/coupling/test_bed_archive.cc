@@ -110,22 +110,58 @@ TEST(BedCheckpoint, LargestOverlapsOfAHystereticLawSurvive)
   const dem::Bed          original = compacted_bed(stepper);
   const dem::Bed          restored = restart(original, model);
 
+  // Active or dormant: the restart sets aside the pairs that are far apart
+  // at the saved positions.
   std::map<std::pair<std::uint32_t, std::uint32_t>, dem::ContactHistory> saved;
-  for (const auto &c : original.contacts.pairs)
+  original.contacts.for_each_kept_pair([&](const dem::PairContact &c) {
     if (dem::has_history(c.history))
       saved[{c.i, c.j}] = c.history;
+  });
   ASSERT_GT(saved.size(), 10u);
   std::size_t found = 0;
-  for (const auto &c : restored.contacts.pairs)
-    {
-      const auto s = saved.find({c.i, c.j});
-      if (s == saved.end())
-        {
-          EXPECT_FALSE(dem::has_history(c.history));
-          continue;
-        }
-      EXPECT_EQ(c.history, s->second);
-      ++found;
-    }
+  restored.contacts.for_each_kept_pair([&](const dem::PairContact &c) {
+    const auto s = saved.find({c.i, c.j});
+    if (s == saved.end())
+      {
+        EXPECT_FALSE(dem::has_history(c.history));
+        return;
+      }
+    EXPECT_EQ(c.history, s->second);
+    ++found;
+  });
   EXPECT_EQ(found, saved.size());
+}
+
+/// A pair set aside as dormant (parted beyond the skin plus its reach) is
+/// saved with its history and set aside again on restart; the pair that
+/// touches stays active.
+TEST(BedCheckpoint, DormantPairsSurvive)
+{
+  const dem::ContactModel model = compax::testing::material1::contact_model();
+  const double            R     = compax::testing::material1::R;
+  dem::Bed                bed;
+  bed.walls.diameter    = 40 * R;
+  bed.walls.lower_punch = 0.0;
+  bed.walls.upper_punch = 10 * R;
+  bed.particles.add({0.0, 0.0, 5 * R}, R);
+  bed.particles.add({2 * R - 1e-6, 0.0, 5 * R}, R);
+  bed.particles.add({-2 * R + 1e-6, 0.0, 5 * R}, R);
+  bed.contacts = dem::ContactSet(0.3 * R);
+  bed.contacts.rebuild(bed.particles, bed.walls, model);
+  ASSERT_EQ(bed.contacts.pairs.size(), 2u);
+  const auto  &law = dem::bonded_law(bed.contacts.pairs[0].law);
+  const double a_p = law.plastic_radius(1e-6);
+  for (auto &c : bed.contacts.pairs)
+    c.history = dem::BondedElastoplasticLaw::history(a_p, a_p);
+  bed.particles.positions[2] = {-4 * R, 0.0, 5 * R};
+  bed.contacts.rebuild(bed.particles, bed.walls, model);
+  ASSERT_EQ(bed.contacts.dormant.size(), 1u);
+
+  const dem::Bed restored = restart(bed, model);
+  ASSERT_EQ(restored.contacts.pairs.size(), 1u);
+  ASSERT_EQ(restored.contacts.dormant.size(), 1u);
+  EXPECT_EQ(restored.contacts.pairs[0].j, 1u);
+  EXPECT_EQ(restored.contacts.dormant[0].j, 2u);
+  EXPECT_EQ(restored.contacts.dormant[0].history,
+            dem::BondedElastoplasticLaw::history(a_p, a_p));
 }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 using namespace compax::dem;
@@ -63,18 +64,18 @@ TEST(NeighborsContactSet, HistorySurvivesRebuildsAndSeparation)
   p.positions[first.i] += Eigen::Vector3d(0, 0, 5e-3); // separates far
   EXPECT_TRUE(set.update(p, walls, model));
   EXPECT_NE(set.revision(), rev);
-  bool kept_separated = false;
-  for (const auto &c : set.pairs)
-    {
-      if (BondedElastoplasticLaw::a_p(c.history) > 0.0)
-        {
-          EXPECT_DOUBLE_EQ(BondedElastoplasticLaw::a_p(c.history),
-                           1e-9 * (1 + c.i * 1000 + c.j));
-        }
-      if (c.i == first.i && c.j == first.j)
-        kept_separated = true;
-    }
-  EXPECT_TRUE(kept_separated);
+  set.for_each_kept_pair([](const PairContact &c) {
+    if (BondedElastoplasticLaw::a_p(c.history) > 0.0)
+      {
+        EXPECT_DOUBLE_EQ(BondedElastoplasticLaw::a_p(c.history),
+                         1e-9 * (1 + c.i * 1000 + c.j));
+      }
+  });
+  // The pair that separated by 5 mm is kept, dormant.
+  const auto is_first
+    = [&](const PairContact &c) { return c.i == first.i && c.j == first.j; };
+  EXPECT_TRUE(std::any_of(set.dormant.begin(), set.dormant.end(), is_first));
+  EXPECT_TRUE(std::none_of(set.pairs.begin(), set.pairs.end(), is_first));
   // Every current neighbour pair is in the list.
   const auto  reference = brute_force_pairs(p.positions, p.radii, 30e-6);
   std::size_t found     = 0;

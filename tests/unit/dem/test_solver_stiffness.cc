@@ -1,5 +1,6 @@
 #include "dem/solver/contact_assembler.h"
 #include "tests/support/gonzalez_material1.h"
+#include "tests/support/pressed_lattice.h"
 
 #include <gtest/gtest.h>
 
@@ -105,25 +106,7 @@ TEST(SolverStiffness, EqualsCentralDifferenceOfResidual)
 TEST(SolverStiffness, ThreadedResidualEqualsSerialAssembly)
 {
   const ContactModel model = material1::contact_model();
-  const double       R     = material1::R;
-  const int          side  = 24;
-  const double       a     = 2 * R * 0.97;
-  Bed                bed;
-  bed.walls.diameter    = 2 * side * a;
-  bed.walls.lower_punch = 0.0;
-  bed.walls.upper_punch = side * a + R;
-  bed.contacts.set_skin(0.5 * R);
-  std::mt19937_64 rng(7);
-  auto            u = [&]() { return (rng() >> 11) * 0x1.0p-53 - 0.5; };
-  for (int k = 0; k < side; ++k)
-    for (int j = 0; j < side; ++j)
-      for (int i = 0; i < side; ++i)
-        {
-          Eigen::Vector3d x((i - side / 2) * a, (j - side / 2) * a, R + k * a);
-          x += 0.02 * R * Eigen::Vector3d(u(), u(), u());
-          bed.particles.add(x, R * (1.0 + 0.04 * u()));
-        }
-  bed.contacts.rebuild(bed.particles, bed.walls, model);
+  Bed bed = compax::testing::pressed_lattice(model, material1::R, 24);
   ASSERT_GE(bed.contacts.pairs.size(), ContactAssembler::parallel_pairs);
 
   omp_set_num_threads(2);
