@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <stdexcept>
-#include <utility>
 
 namespace compax::coupling
 {
@@ -113,7 +112,7 @@ namespace compax::coupling
     std::sort(bed.contacts.pairs.begin(),
               bed.contacts.pairs.end(),
               [](const dem::PairContact &a, const dem::PairContact &b) {
-                return std::make_pair(a.i, a.j) < std::make_pair(b.i, b.j);
+                return dem::pair_key(a) < dem::pair_key(b);
               });
     const auto        w  = archive.read_array(group + "/wall_histories");
     const std::size_t wc = columns_of(archive, group + "/wall_histories");

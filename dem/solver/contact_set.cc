@@ -46,7 +46,7 @@ namespace compax::dem
       pairs,
       old_pairs,
       old_dormant,
-      [](const PairContact &c) { return ParticlePair(c.i, c.j); },
+      pair_key,
       [&](const ParticlePair &ij) {
         const auto [i, j] = ij;
         return PairContact{i,

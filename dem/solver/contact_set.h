@@ -22,6 +22,13 @@ namespace compax::dem
     ContactHistory history;
   };
 
+  /// A pair contact's place in the sorted lists of a ContactSet: (i, j).
+  inline ParticlePair
+  pair_key(const PairContact &c)
+  {
+    return {c.i, c.j};
+  }
+
   /// A potential contact of particle i with a rigid wall.
   struct WallContact
   {

@@ -19,7 +19,6 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <utility>
 #include <vector>
 
 using namespace compax::dem;
@@ -39,7 +38,7 @@ namespace
     std::sort(pairs.begin(),
               pairs.end(),
               [](const PairContact &a, const PairContact &b) {
-                return std::make_pair(a.i, a.j) < std::make_pair(b.i, b.j);
+                return pair_key(a) < pair_key(b);
               });
     return bed;
   }
@@ -248,7 +247,7 @@ TEST(DormantContacts, ThreadedResidualDoesNotDependOnPairsThatCarryNothing)
   std::sort(pairs.begin(),
             pairs.end(),
             [](const PairContact &a, const PairContact &b) {
-              return std::make_pair(a.i, a.j) < std::make_pair(b.i, b.j);
+              return pair_key(a) < pair_key(b);
             });
 
   omp_set_num_threads(2);
