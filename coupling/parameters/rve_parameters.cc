@@ -317,8 +317,9 @@ namespace compax::coupling
       "tolerances (from where the relaxation got to, converged or not; a "
       "step whose Newton fails is cut back). balanced-relaxation: the "
       "relaxation itself run to the Solver tolerances (or every net force "
-      "below 1e-6 of a particle's share of the Jamming pressure) within "
-      "2e5 FIRE iterations, else the step is cut back. balanced-lbfgs "
+      "below 1e-6 of a particle's share of the Jamming pressure) for as "
+      "long as it keeps approaching them (as compax die's), else the step "
+      "is cut back. balanced-lbfgs "
       "(default): the same, minimised by L-BFGS instead of FIRE. The last "
       "three balance loose states as tightly as jammed ones.");
     declare_history_update(prm,

@@ -93,9 +93,11 @@ namespace compax::dem
           = !frozen && relaxes_by_lbfgs(opts.unjammed_equilibrium);
         const bool balanced
           = !frozen && relaxes_to_balance(opts.unjammed_equilibrium);
-        Relaxation      &minimiser = lbfgs_minimiser
-                                       ? static_cast<Relaxation &>(lbfgs)
-                                       : static_cast<Relaxation &>(fire);
+        Relaxation &minimiser = lbfgs_minimiser
+                                  ? static_cast<Relaxation &>(lbfgs)
+                                  : static_cast<Relaxation &>(fire);
+        minimiser.give_up_when_stalled(balanced ? opts.balanced_stall_window
+                                                : 0);
         const FireResult f
           = balanced ? minimiser.relax(system,
                                        opts.equilibrium.force_tolerance,

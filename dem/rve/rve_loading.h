@@ -61,8 +61,12 @@ namespace compax::dem
     UnjammedEquilibrium unjammed_equilibrium
       = UnjammedEquilibrium::balanced_lbfgs;
     /// FIRE iterations, or L-BFGS residual evaluations, allowed per
-    /// balanced relaxation.
-    int balanced_iterations = 200000;
+    /// balanced relaxation ...
+    int balanced_iterations = 1000000;
+    /// ... which gives up, and cuts the sub-step back, once this many pass
+    /// without halving its distance to balance (as the die's,
+    /// LoadSteppingOptions::balanced_stall_window).
+    int balanced_stall_window = 200000;
     /// FIRE iterations allowed per unjammed sub-step.
     int fire_iterations = 20000;
     /// Relative residual an unjammed sub-step relaxes to [-] ...

@@ -27,7 +27,7 @@ namespace compax::dem
     inverse_mass.resize(3 * n);
     const double cap = 0.1 * system.skin();
 
-    start_reports();
+    start_watching();
     FireResult result;
     double     dt = 0.1, alpha = alpha0;
     int        n_positive = 0;
@@ -37,7 +37,7 @@ namespace compax::dem
     for (int it = 0;; ++it)
       {
         record(result, relaxation_balance(F, sums, target, force_floor), it);
-        if (result.converged || it >= max_iterations)
+        if (result.converged || result.stalled || it >= max_iterations)
           break;
         // F is the gradient: the force is -F.
         const double power = -F.dot(v);

@@ -84,7 +84,7 @@ namespace compax::dem
     scaling          = 1.0;
     const double cap = system.skin();
 
-    start_reports();
+    start_watching();
     FireResult result;
     assemble_inverse_diagonal(system, g, inverse_diagonal);
     int evaluations = 1, accepted = 0;
@@ -95,7 +95,8 @@ namespace compax::dem
         record(result,
                relaxation_balance(g, sums, target, force_floor),
                evaluations);
-        if (result.converged || evaluations >= max_evaluations)
+        if (result.converged || result.stalled
+            || evaluations >= max_evaluations)
           break;
         if (accepted > 0 && accepted % preconditioner_interval == 0)
           {

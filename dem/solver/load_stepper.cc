@@ -79,13 +79,15 @@ namespace compax::dem
                               ? static_cast<Relaxation &>(lbfgs)
                               : static_cast<Relaxation &>(fire);
     const bool  balanced  = relaxes_to_balance(stepping.unjammed_equilibrium);
-    const FireResult f    = balanced
-                              ? minimiser.relax(bed,
+    minimiser.give_up_when_stalled(balanced ? stepping.balanced_stall_window
+                                            : 0);
+    const FireResult f = balanced
+                           ? minimiser.relax(bed,
                                              model,
                                              eq.force_tolerance,
                                              stepping.balanced_iterations,
                                              eq.force_floor)
-                              : minimiser.relax(bed,
+                           : minimiser.relax(bed,
                                              model,
                                              stepping.unjammed_tolerance,
                                              stepping.unjammed_iterations,

@@ -58,8 +58,10 @@ namespace compax::dem
      *   remove the large rearrangements), and its solution is the
      *   sub-step's state; a Newton solve that fails cuts the sub-step back;
      * - balanced_relaxation: the relaxation runs to EquilibriumOptions'
-     *   force tolerance or force floor within balanced_iterations; one that
-     *   does not get there cuts the sub-step back;
+     *   force tolerance or force floor, for as long as it keeps
+     *   approaching them (balanced_stall_window) and at most
+     *   balanced_iterations; one that does not get there cuts the sub-step
+     *   back;
      * - least_squares: no relaxation; LeastSquaresTrustRegion (Algorithm
      *   1 as printed) to its step tolerance, a state that need not be
      *   balanced; one that does not converge cuts the sub-step back.
@@ -67,10 +69,16 @@ namespace compax::dem
     UnjammedEquilibrium unjammed_equilibrium = UnjammedEquilibrium::relaxation;
     /// FIRE iterations allowed per unjammed relaxation.
     int unjammed_iterations = 50000;
-    /// FIRE iterations allowed per balanced_relaxation: near the jamming
-    /// onset the slowest mode of the bed softens, and a 6512-sphere die
-    /// step there took up to 1.3e5 iterations.
-    int balanced_iterations = 200000;
+    /// FIRE iterations (L-BFGS residual evaluations) allowed per balanced
+    /// relaxation: near the jamming onset the slowest mode of the bed
+    /// softens, and a 6512-sphere die step there took up to 3.6e5
+    /// evaluations (doc/benchmarks.md).
+    int balanced_iterations = 1000000;
+    /// A balanced relaxation that has not halved its distance to balance
+    /// (max_i |F_i| over the force it must fall below) within this many
+    /// evaluations gives up, and the sub-step is cut back
+    /// (Relaxation::give_up_when_stalled).
+    int balanced_stall_window = 200000;
     /**
      * Force resolution of the study [N]: Eq. (13) grows no plastic radius
      * (and forms no bridge) at a contact whose force is below it (see

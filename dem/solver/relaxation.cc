@@ -4,6 +4,8 @@
 #include "dem/solver/stiffness_scaling.h"
 #include "dem/wall_clock.h"
 
+#include <cmath>
+#include <limits>
 #include <utility>
 
 namespace compax::dem
@@ -27,10 +29,18 @@ namespace compax::dem
   }
 
   void
-  Relaxation::start_reports()
+  Relaxation::give_up_when_stalled(const int window)
   {
-    started     = std::chrono::steady_clock::now();
-    last_report = started;
+    stall_window = window;
+  }
+
+  void
+  Relaxation::start_watching()
+  {
+    started            = std::chrono::steady_clock::now();
+    last_report        = started;
+    stall_reference    = std::numeric_limits<double>::infinity();
+    stall_reference_at = 0;
   }
 
   void
@@ -39,6 +49,16 @@ namespace compax::dem
                      const int                evaluations)
   {
     result.record(balance, evaluations);
+    const double distance = balance.balanced_below > 0.0
+                              ? balance.largest_force / balance.balanced_below
+                              : balance.largest_force;
+    if (distance <= 0.5 * stall_reference || std::isinf(stall_reference))
+      {
+        stall_reference    = distance;
+        stall_reference_at = evaluations;
+      }
+    result.stalled = !result.converged && stall_window > 0
+                     && evaluations - stall_reference_at >= stall_window;
     if (!report || seconds_since(last_report) < report_interval)
       return;
     last_report = std::chrono::steady_clock::now();

@@ -39,6 +39,9 @@ namespace compax::dem
     ContactSums sums;
     /// Residual evaluations with the stiffness (mass updates).
     int assemblies = 0;
+    /// Stopped unconverged because it no longer approached balance
+    /// (Relaxation::give_up_when_stalled).
+    bool stalled = false;
 
     /// Where the relaxation stands after @p evaluations residual
     /// evaluations, by the shared stopping test (relaxation_balance).
@@ -90,12 +93,25 @@ namespace compax::dem
     void
     report_progress(RelaxationReport report, double interval);
 
-  protected:
-    /// Starts the clock of the reports (at the start of relax()).
+    /**
+     * Makes relax() stop, unconverged, once @p window residual evaluations
+     * (FIRE iterations) pass without halving the distance to balance,
+     * max_i |F_i| over the force it must fall below; 0 (the default):
+     * only the budget stops it. Near the jamming onset a relaxation
+     * approaches balance steadily but slowly, for longer than any fixed
+     * budget fits; one that stalls should give up long before it.
+     */
     void
-    start_reports();
+    give_up_when_stalled(int window);
 
-    /// result.record(balance, evaluations), and a report if one is due.
+  protected:
+    /// Starts the clock of the reports and the stall test (at the start of
+    /// relax()).
+    void
+    start_watching();
+
+    /// result.record(balance, evaluations), the stall test, and a report
+    /// if one is due.
     void
     record(FireResult              &result,
            const RelaxationBalance &balance,
@@ -118,5 +134,10 @@ namespace compax::dem
     RelaxationReport                      report;
     double                                report_interval = 0.0;
     std::chrono::steady_clock::time_point started, last_report;
+    /// give_up_when_stalled()'s window [evaluations]; 0: off.
+    int stall_window = 0;
+    /// The distance to balance when it last halved, and when.
+    double stall_reference    = 0.0;
+    int    stall_reference_at = 0;
   };
 } // namespace compax::dem

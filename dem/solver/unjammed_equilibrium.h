@@ -24,8 +24,8 @@ namespace compax::dem
     /// force floor).
     relaxation_then_newton,
     /// The relaxation itself run to the equilibrium tolerances (relative
-    /// force tolerance, or the absolute force floor), with the larger
-    /// iteration budget of LoadSteppingOptions::balanced_iterations. Near
+    /// force tolerance, or the absolute force floor), for as long as it
+    /// approaches them (LoadSteppingOptions::balanced_stall_window). Near
     /// the jamming onset the bed sits on saddles whose negative curvature
     /// lives on the scale of the overlaps, where Newton's quadratic model
     /// fails for steps a rearrangement needs; FIRE's inertia does not.
