@@ -4,7 +4,6 @@
 #include "dem/solver/stiffness_scaling.h"
 #include "dem/wall_clock.h"
 
-#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -52,7 +51,7 @@ namespace compax::dem
     const double distance = balance.balanced_below > 0.0
                               ? balance.largest_force / balance.balanced_below
                               : balance.largest_force;
-    if (distance <= 0.5 * stall_reference || std::isinf(stall_reference))
+    if (distance <= 0.5 * stall_reference) // the first is below infinity
       {
         stall_reference    = distance;
         stall_reference_at = evaluations;

@@ -1,6 +1,7 @@
 #include "dem/solver/fire_relaxation.h"
 #include "dem/solver/lbfgs_relaxation.h"
 #include "tests/support/gonzalez_material1.h"
+#include "tests/support/sphere_column.h"
 
 #include <gtest/gtest.h>
 
@@ -111,22 +112,15 @@ TEST(RelaxationStall, ARelaxationThatCannotBalanceGivesUpAfterTheWindow)
 
 /// A relaxation that keeps halving its distance to balance within the
 /// window is not touched by the test: a column of six Material 1 spheres
-/// squeezed by 0.2 R relaxes to 1e-9 of its contact force in the same
-/// evaluations and to the same positions, to the bit, with a window of a
-/// quarter of its evaluations as without one. A window of one evaluation
+/// (and a rattler) squeezed by 0.2 R relaxes to 1e-9 of its contact force in
+/// the same evaluations and to the same positions, to the bit, with a window of
+/// a quarter of its evaluations as without one. A window of one evaluation
 /// stops it early, unbalanced.
 TEST(RelaxationStall, ARelaxationThatApproachesBalanceIsNotStopped)
 {
-  const ContactModel model  = compax::testing::material1::contact_model();
-  auto               column = []() {
-    Bed bed;
-    bed.walls.diameter    = 12 * R;
-    bed.walls.upper_punch = 2 * R * 6 - 0.2 * R;
-    bed.contacts.set_skin(0.3 * R);
-    for (int k = 0; k < 6; ++k)
-      bed.particles.add({0.0, 0.0, R + 2 * R * k}, R);
-    return bed;
-  };
+  const ContactModel model = compax::testing::material1::contact_model();
+  const auto         column
+    = []() { return compax::testing::sphere_column(6, R, 0.2 * R); };
   FireRelaxation  fire;
   LbfgsRelaxation lbfgs;
   for (Relaxation *minimiser : both(fire, lbfgs))

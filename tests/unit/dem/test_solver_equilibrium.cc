@@ -3,6 +3,7 @@
 #include "dem/solver/least_squares_trust_region.h"
 #include "dem/solver/load_stepper.h"
 #include "tests/support/gonzalez_material1.h"
+#include "tests/support/sphere_column.h"
 
 #include <gtest/gtest.h>
 
@@ -58,23 +59,13 @@ namespace
     return max_particle_norm(F) / sums.mean_force;
   }
 
-  /// Where the rattler of the column tests sits, away from the column.
-  const Eigen::Vector3d column_rattler(4 * R, 0.0, 3 * R);
+  const Eigen::Vector3d column_rattler = compax::testing::column_rattler(R);
 
-  /// N spheres in a simple-cubic column between the punches, touching,
-  /// with the upper punch lowered by @p squeeze (so that all of it sits in
-  /// the top contact), and a rattler at column_rattler.
+  /// The column of compax::testing::sphere_column() with Material 1's R.
   Bed
   column_with_rattler(const int N, const double squeeze)
   {
-    Bed bed;
-    bed.walls.diameter    = 12 * R;
-    bed.walls.upper_punch = 2 * R * N - squeeze;
-    bed.contacts.set_skin(0.3 * R);
-    for (int k = 0; k < N; ++k)
-      bed.particles.add({0.0, 0.0, R + 2 * R * k}, R);
-    bed.particles.add(column_rattler, R);
-    return bed;
+    return compax::testing::sphere_column(N, R, squeeze);
   }
 
   /// The one force P through the N + 1 contacts in series of a column
