@@ -234,6 +234,8 @@ namespace compax::dem
         stepping.unjammed_equilibrium      = protocol.unjammed_equilibrium;
         stepping.resolved_history          = protocol.resolved_history;
         stepping.secant_predictor_unjammed = protocol.secant_predictor_unjammed;
+        stepping.relax_opening_at_first_failure
+          = protocol.relax_opening_at_first_failure;
       }
     stepper = std::make_unique<LoadStepper>(model, equilibrium, stepping);
     report_relaxations();

@@ -73,6 +73,10 @@ namespace compax::dem
     /// (true) or the affine one (false)
     /// (LoadSteppingOptions::secant_predictor_unjammed).
     bool secant_predictor_unjammed = true;
+    /// Bonded path: where Newton fails on a sub-step that opens the punch
+    /// gap, the balanced relaxation takes it at once instead of after the
+    /// cut-backs (LoadSteppingOptions::relax_opening_at_first_failure).
+    bool relax_opening_at_first_failure = true;
     /// Bonded path: true, a contact whose force is not above
     /// force_resolution() keeps its internal variables when Eq. (13) is
     /// applied (LoadSteppingOptions::resolved_history); false, Eq. (13)

@@ -242,7 +242,8 @@ namespace compax::dem
         if (!coming_apart)
           r = solve_substep(bed, total);
         if (!r.converged
-            && (coming_apart || 0.5 * fraction < stepping.min_fraction))
+            && (coming_apart || stepping.relax_opening_at_first_failure
+                || 0.5 * fraction < stepping.min_fraction))
           {
             r            = relax_coming_apart(bed, next, total);
             coming_apart = r.converged;

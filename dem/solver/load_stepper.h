@@ -90,6 +90,17 @@ namespace compax::dem
     /// state, however small its force (force_resolution then only ends
     /// unjammed relaxations).
     bool resolved_history = true;
+    /**
+     * Where Newton fails on a sub-step that opens the punch gap of a jammed
+     * bed: true, the balanced relaxation takes that sub-step at once
+     * (relax_coming_apart()); false, the sub-step is cut back, and only the
+     * smallest sub-step goes to the relaxation. Both stop at the same
+     * tolerances, and may find different balanced states of a compact that
+     * comes apart. Measured (doc/benchmarks.md): Gonzalez 2018's Sec. 5
+     * studies of both materials are the same to the bit either way; the
+     * Walton-Braun bed of the peer comparison unloads in half the time.
+     */
+    bool relax_opening_at_first_failure = true;
   };
 
   /// Outcome of one load step (possibly several sub-steps).
@@ -207,8 +218,9 @@ namespace compax::dem
     solve_substep(Bed &bed, LoadStepResult &total);
 
     /**
-     * The smallest sub-step to walls `next` from `saved` once more, by the
-     * balanced relaxation, after Newton failed on it: the last resort
+     * The sub-step to walls `next` from `saved` once more, by the balanced
+     * relaxation, after Newton failed on it (at once, or only on the
+     * smallest sub-step: relax_opening_at_first_failure): the last resort
      * before the step fails, for a jammed bed whose punch gap opens (a
      * compact without bridges coming apart on unloading, whose floppy
      * modes Newton cannot balance). Converged only if the relaxation
