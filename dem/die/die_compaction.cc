@@ -652,10 +652,13 @@ namespace compax::dem
         strain.push_back((H - H_max) / H_max);
         axial.push_back(d.upper_punch_pressure);
         radial.push_back(d.die_wall_pressure);
-        if (d.upper_punch_force <= 0.0 || step > 10000)
+        if (d.upper_punch_force <= force_resolution() || step > 10000)
           {
-            // The punch separated within this step: interpolate the gap
-            // at which its force vanished.
+            // The punch separated within this step: its force vanished or
+            // fell below the force resolution, the force Z and Eq. (13)
+            // read as none (a balanced state can leave the punch a
+            // round-off force). The secant through this state and the one
+            // before gives the gap at which the force vanished.
             const double F = d.upper_punch_force;
             H_min
               = F_prev > F ? H_prev + (H - H_prev) * F_prev / (F_prev - F) : H;

@@ -86,8 +86,22 @@ TEST_F(DieCommand, ThinCompactUnloadsUntilThePunchComesFree)
 
   const Csv die(folder / "out" / "die.csv");
   expect_balanced_punches(die);
-  ASSERT_EQ(die.text.at("stage").back(), "unloading");
-  EXPECT_LE(die.column.at("upper_punch_force").back(), 0.0);
+  // The punch comes free: the branch ends at the first state whose punch
+  // force is below the force resolution (1e-2 x 0.5 MPa on pi R^2, R = 220
+  // um), a force Z and Eq. (13) read as none. A balanced state may leave it a
+  // round-off force (this bed's last row carried 3.3e-7 N when measured).
+  const double resolution = 1e-2 * 0.5e6 * M_PI * 220e-6 * 220e-6;
+  const auto  &stage      = die.text.at("stage");
+  const auto  &force      = die.column.at("upper_punch_force");
+  ASSERT_EQ(stage.back(), "unloading");
+  EXPECT_LE(force.back(), resolution);
+  for (std::size_t i = 0; i + 1 < stage.size(); ++i)
+    {
+      if (stage[i] == "unloading")
+        {
+          EXPECT_GT(force[i], resolution) << "row " << i;
+        }
+    }
 
   const Csv branches(folder / "out" / "branches.csv");
   ASSERT_EQ(branches.rows(), 1u);

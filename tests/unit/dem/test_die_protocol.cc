@@ -29,6 +29,18 @@ namespace
   {
     return ContactModel(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0}, 1.26e6);
   }
+
+  /// Eq. (16)'s rho_min from the last two states of an unloading branch:
+  /// where the secant through their punch forces reaches zero. The solid
+  /// volume over the punch gap is the density, so 1/rho is linear in the gap.
+  double
+  secant_separation_density(const DieRecord &before, const DieRecord &last)
+  {
+    const double F0 = before.upper_punch_force, F1 = last.upper_punch_force;
+    const double h0 = 1 / before.relative_density,
+                 h1 = 1 / last.relative_density;
+    return 1 / (h0 + (h1 - h0) * F0 / (F0 - F1));
+  }
 } // namespace
 
 /// A small deposited bed of Material 1 compacted, unloaded and ejected.
@@ -81,6 +93,17 @@ TEST(DieProtocol, PunchForcesBalanceAndBranchesAreConsistent)
     }
   EXPECT_TRUE(saw[0] && saw[1] && saw[2]);
 
+  // The unloading branch ends at its first state whose punch force is below
+  // the force resolution, and rho_min is the secant's zero there.
+  std::vector<DieRecord> unloading;
+  for (const DieRecord &r : die.records())
+    if (r.stage == "unloading")
+      unloading.push_back(r);
+  ASSERT_GE(unloading.size(), 2u);
+  for (std::size_t i = 0; i + 1 < unloading.size(); ++i)
+    EXPECT_GT(unloading[i].upper_punch_force, die.force_resolution()) << i;
+  EXPECT_LE(unloading.back().upper_punch_force, die.force_resolution());
+
   // Independent residual of the final compaction state.
   Bed               final_bed = die.bed();
   ContactAssembler  a;
@@ -99,6 +122,9 @@ TEST(DieProtocol, PunchForcesBalanceAndBranchesAreConsistent)
   EXPECT_NEAR(b.elastic_recovery_H,
               b.elastic_recovery_rho / (1 - b.elastic_recovery_rho),
               1e-9);
+  EXPECT_NEAR(b.rho_min_in_die,
+              secant_separation_density(unloading.end()[-2], unloading.back()),
+              1e-12);
   EXPECT_GE(b.residual_radial_pressure, 0.0);
   // Gonzalez 2018 Sec. 5: the tablet out of the die has about the density
   // at the end of unloading, rho_tablet ~ rho_min^in-die.

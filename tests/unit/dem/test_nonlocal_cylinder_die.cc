@@ -179,7 +179,8 @@ namespace
             reached |= r.stage == "compaction"
                        && std::abs(r.relative_density - 0.62) < 1e-12
                        && r.upper_punch_force > 0.0;
-            unloaded |= r.stage == "unloading" && r.upper_punch_force <= 0.0;
+            unloaded |= r.stage == "unloading"
+                        && r.upper_punch_force <= die.force_resolution();
           }
         EXPECT_TRUE(reached) << nonlocal;
         EXPECT_TRUE(unloaded) << nonlocal;
