@@ -14,6 +14,7 @@
 //    needs (the comparison at equal accuracy).
 // Preparation (packing and loading) is done once per N and not timed.
 
+#include "benchmarks/material1_model.h"
 #include "dem/rve/homogenization.h"
 #include "dem/rve/periodic_bed_system.h"
 #include "dem/rve/periodic_packing.h"
@@ -28,14 +29,8 @@
 namespace
 {
   using namespace compax::dem;
+  using compax::benchmarks::material1_model;
 
-  const ContactModel &
-  model()
-  {
-    static const ContactModel m(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0},
-                                1.26e6);
-    return m;
-  }
 
   Eigen::Matrix3d
   uniaxial(double rho0, double rho)
@@ -73,9 +68,9 @@ namespace
     spec.relative_density    = rho_start;
     spec.seed                = 1;
     Prepared p;
-    p.packing        = make_periodic_packing(spec, model());
+    p.packing        = make_periodic_packing(spec, material1_model());
     PeriodicBed  bed = p.packing;
-    RveLoading   loading(model());
+    RveLoading   loading(material1_model());
     const double rho0 = bed.relative_density();
     for (int k = 1; k <= steps; ++k)
       {
@@ -95,7 +90,7 @@ namespace
     for (auto _ : state)
       {
         PeriodicBed  bed = p.packing;
-        RveLoading   loading(model());
+        RveLoading   loading(material1_model());
         const double rho0 = bed.relative_density();
         for (int k = 1; k <= steps; ++k)
           benchmark::DoNotOptimize(
@@ -117,7 +112,7 @@ namespace
       {
         state.PauseTiming();
         PeriodicBed bed = p.before_last;
-        RveLoading  loading(model());
+        RveLoading  loading(material1_model());
         state.ResumeTiming();
         iterations
           = loading.deform_to(bed, uniaxial(rho0, target(steps))).iterations;
@@ -133,7 +128,8 @@ namespace
     TangentCalculator tangent;
     for (auto _ : state)
       benchmark::DoNotOptimize(
-        tangent.compute(bed, model(), ContactBranch::current).condensed(2, 2));
+        tangent.compute(bed, material1_model(), ContactBranch::current)
+          .condensed(2, 2));
   }
 
   /// Six forward-difference re-equilibrations with the given force and
@@ -161,7 +157,7 @@ namespace
             map_affinely(bed,
                          (Eigen::Matrix3d::Identity() + strain_from_voigt(e))
                            * bed.deformation);
-            PeriodicBedSystem system(bed, model(), assembler);
+            PeriodicBedSystem system(bed, material1_model(), assembler);
             iterations += newton.solve(system).work.iterations;
             benchmark::DoNotOptimize(love_weber_stress(bed)(2, 2));
           }

@@ -87,10 +87,9 @@ namespace compax::dem
 
   /**
    * Beds with at least this many candidate pairs evaluate the pairs of a
-   * residual on every OpenMP thread, each into its own force vector, and
-   * sum those in thread order (the same result for the same thread
-   * count). Below it the threads' start and the sum of their vectors cost
-   * about what they save. A bed type may set its own.
+   * residual on every OpenMP thread (PairAssembler::residual()). Below it
+   * the threads' start costs about what they save. A bed type may set its
+   * own.
    */
   template <typename BedType>
   inline constexpr std::size_t parallel_residual_pairs = 20000;
@@ -140,19 +139,58 @@ namespace compax::dem
              BlockSparseMatrix *K,
              ContactBranch      branch);
 
+    /// The pairs' terms into F (and K), one pair after the other in list
+    /// order.
+    template <bool with_stiffness, typename Response>
+    void
+    add_pairs_in_order(const BedType     &bed,
+                       const Response    &response,
+                       Eigen::VectorXd   &F,
+                       BlockSparseMatrix *K,
+                       LoadedContacts    &loaded);
+
     /// The pairs' forces into F on every thread (residual only).
+    template <typename Response>
     void
     add_pair_forces_in_parallel(const BedType   &bed,
+                                const Response  &response,
                                 Eigen::VectorXd &F,
                                 LoadedContacts  &loaded);
 
+    /// Entry e of `incidence` as the force it adds to its particle: -P n
+    /// of its pair on particle i, +P n on particle j. f + (-P n) is
+    /// f - P n to the bit: a sign, not a branch.
+    Eigen::Vector3d
+    signed_pair_force(const std::uint32_t e) const
+    {
+      constexpr double sign[2] = {-1.0, 1.0};
+      return sign[e & 1u] * pair_force[e >> 1];
+    }
+
+    /// Rebuilds `incidence` where the contact list changed.
+    template <typename Pairs>
+    void
+    refresh_incidence(std::size_t   n_particles,
+                      std::uint64_t revision,
+                      const Pairs  &pairs);
+
     PairPattern pattern;
-    /// Per-thread force vectors and counts of add_pair_forces_in_parallel,
-    /// kept between calls so that a residual allocates nothing.
-    std::vector<Eigen::VectorXd> thread_forces;
-    std::vector<LoadedContacts>  thread_loaded;
-    /// Thread t sums pairs thread_first[t] to thread_first[t + 1] - 1.
-    std::vector<std::size_t> thread_first;
+    /// Pair k's force on its particle j, P n [N] (zero where the pair
+    /// carries nothing), of the last parallel residual.
+    std::vector<Eigen::Vector3d> pair_force;
+    /// Block b of the count of loaded contacts (starts_loaded_block()):
+    /// pairs block_first[b] to block_first[b + 1] - 1; and its count in the
+    /// last parallel residual.
+    std::vector<std::size_t>    block_first;
+    std::vector<LoadedContacts> block_loaded;
+    /// Particle p's pairs in list order: entries incidence_first[p] to
+    /// incidence_first[p + 1] - 1 of `incidence`, each 2k + 1 where p is
+    /// pair k's particle j and 2k where it is its particle i. Summing a
+    /// particle's forces in this order is the serial loop's sum.
+    std::vector<std::uint32_t> incidence_first;
+    std::vector<std::uint32_t> incidence;
+    std::uint64_t              incidence_revision = ~std::uint64_t(0);
+    std::size_t                incidence_pairs    = 0;
   };
 
   template <typename BedType>
@@ -194,16 +232,24 @@ namespace compax::dem
     ContactSums       sums;
     LoadedContacts    loaded;
     const std::size_t n_pairs = bed.contacts.pairs.size();
-    if (!with_stiffness && n_pairs >= parallel_pairs)
-      add_pair_forces_in_parallel(bed, F, loaded);
+    if constexpr (!with_stiffness)
+      {
+        // A residual is on the current branch. One thread sums the pairs
+        // in list order directly: the parallel sum to the bit.
+        const auto response = [](const auto &c, const double gamma) {
+          return contact_response(c, gamma, ContactBranch::current);
+        };
+        if (n_pairs >= parallel_pairs && omp_get_max_threads() > 1)
+          add_pair_forces_in_parallel(bed, response, F, loaded);
+        else
+          add_pairs_in_order<false>(bed, response, F, nullptr, loaded);
+      }
     else
       {
         const auto response = [branch](const auto &c, const double gamma) {
           return contact_response(c, gamma, branch);
         };
-        for (std::size_t k = 0; k < n_pairs; ++k)
-          add_pair_terms<with_stiffness>(
-            bed, k, response, pattern, F, K, loaded);
+        add_pairs_in_order<true>(bed, response, F, K, loaded);
       }
     add_wall_terms<with_stiffness>(bed, F, K, sums, loaded);
     loaded.report(sums);
@@ -211,61 +257,123 @@ namespace compax::dem
   }
 
   template <typename BedType>
+  template <typename Pairs>
+  void
+  PairAssembler<BedType>::refresh_incidence(const std::size_t   n_particles,
+                                            const std::uint64_t revision,
+                                            const Pairs        &pairs)
+  {
+    if (revision == incidence_revision && pairs.size() == incidence_pairs
+        && incidence_first.size() == n_particles + 1)
+      return;
+    // Counting sort of the pairs' two ends by particle, in list order.
+    incidence_first.assign(n_particles + 1, 0);
+    for (const auto &c : pairs)
+      {
+        ++incidence_first[c.i + 1];
+        ++incidence_first[c.j + 1];
+      }
+    for (std::size_t p = 0; p < n_particles; ++p)
+      incidence_first[p + 1] += incidence_first[p];
+    incidence.resize(2 * pairs.size());
+    std::vector<std::uint32_t> next(incidence_first.begin(),
+                                    incidence_first.end() - 1);
+    for (std::size_t k = 0; k < pairs.size(); ++k)
+      {
+        const auto side_i             = static_cast<std::uint32_t>(2 * k);
+        incidence[next[pairs[k].i]++] = side_i;
+        incidence[next[pairs[k].j]++] = side_i + 1;
+      }
+    block_first.assign(1, 0);
+    for (std::size_t k = 1; k < pairs.size(); ++k)
+      if (starts_loaded_block(pairs[k - 1], pairs[k]))
+        block_first.push_back(k);
+    block_first.push_back(pairs.size());
+    incidence_revision = revision;
+    incidence_pairs    = pairs.size();
+  }
+
+  template <typename BedType>
+  template <bool with_stiffness, typename Response>
+  void
+  PairAssembler<BedType>::add_pairs_in_order(const BedType     &bed,
+                                             const Response    &response,
+                                             Eigen::VectorXd   &F,
+                                             BlockSparseMatrix *K,
+                                             LoadedContacts    &loaded)
+  {
+    const auto       &pairs   = bed.contacts.pairs;
+    const std::size_t n_pairs = pairs.size();
+    LoadedContacts    block;
+    for (std::size_t k = 0; k < n_pairs; ++k)
+      {
+        add_pair_terms<with_stiffness>(bed, k, response, pattern, F, K, block);
+        if (k + 1 == n_pairs || starts_loaded_block(pairs[k], pairs[k + 1]))
+          {
+            loaded.add(block);
+            block = LoadedContacts{};
+          }
+      }
+  }
+
+  template <typename BedType>
+  template <typename Response>
   void
   PairAssembler<BedType>::add_pair_forces_in_parallel(const BedType   &bed,
+                                                      const Response  &response,
                                                       Eigen::VectorXd &F,
                                                       LoadedContacts  &loaded)
   {
-    const auto response = [](const auto &c, const double gamma) {
-      return contact_response(c, gamma, ContactBranch::current);
-    };
-    const int  threads = omp_get_max_threads();
-    const auto size    = static_cast<Eigen::Index>(F.size());
-    thread_forces.resize(threads);
-    thread_loaded.assign(threads, LoadedContacts{});
-    for (Eigen::VectorXd &f : thread_forces)
-      f.resize(size);
-    // Thread t sums the pairs whose first particle is in the t-th share of
-    // the particles (the list is sorted by it), so that which thread sums a
-    // pair, and so the rounding, does not depend on the other pairs listed:
-    // the same with or without pairs that carry nothing (a list's dormant
-    // pairs, a resumed run's fresh list). The boundaries only ever grow,
-    // so every pair is summed once even in an unsorted list.
-    const auto &pairs = bed.contacts.pairs;
-    thread_first.assign(threads + 1, pairs.size());
-    thread_first[0] = 0;
-    for (int t = 1; t < threads; ++t)
-      {
-        const auto first_particle = static_cast<std::uint32_t>(
-          bed.particles.size() * static_cast<std::size_t>(t) / threads);
-        const auto split = std::partition_point(pairs.begin(),
-                                                pairs.end(),
-                                                [&](const auto &c) {
-                                                  return c.i < first_particle;
-                                                });
-        thread_first[t]
-          = std::max(thread_first[t - 1],
-                     static_cast<std::size_t>(split - pairs.begin()));
-      }
-#pragma omp parallel num_threads(threads)
+    // Two passes, so that F does not depend on the number of threads: the
+    // pairs' forces on any thread, then each particle's sum of its pairs'
+    // forces in list order, which is add_pairs_in_order()'s sum to the bit.
+    const auto       &pairs       = bed.contacts.pairs;
+    const std::size_t n_pairs     = pairs.size();
+    const std::size_t n_particles = bed.particles.size();
+    refresh_incidence(n_particles, bed.contacts.revision(), pairs);
+    pair_force.resize(n_pairs);
+    const std::size_t n_blocks = block_first.size() - 1;
+    block_loaded.resize(n_blocks);
+    const auto blocks = static_cast<std::ptrdiff_t>(n_blocks);
+    const auto n      = static_cast<std::ptrdiff_t>(n_particles);
+#pragma omp parallel
     {
-      const int        t  = omp_get_thread_num();
-      Eigen::VectorXd &Ft = thread_forces[t];
-      Ft.setZero();
-      // Thread-local counters: neighbouring slots of one vector would
-      // share a cache line and serialise the threads.
-      LoadedContacts loaded_t;
-      for (std::size_t k = thread_first[t]; k < thread_first[t + 1]; ++k)
-        add_pair_terms<false>(bed, k, response, pattern, Ft, nullptr, loaded_t);
-      thread_loaded[t] = loaded_t;
-#pragma omp barrier
-      // Every thread's vector is complete.
 #pragma omp for schedule(static)
-      for (Eigen::Index i = 0; i < size; ++i)
-        for (int s = 0; s < threads; ++s)
-          F[i] += thread_forces[s][i];
+      for (std::ptrdiff_t b = 0; b < blocks; ++b)
+        {
+          LoadedContacts block;
+          for (std::size_t k = block_first[b]; k < block_first[b + 1]; ++k)
+            pair_force[k] = pair_force_terms(bed, k, response, block);
+          block_loaded[b] = block;
+        }
+      // Every pair's force is known (the loop's barrier). Each particle's
+      // sum is a chain of dependent additions: two particles at a time, so
+      // that the two chains overlap.
+      const auto pairs_of_particles = (n + 1) / 2;
+#pragma omp for schedule(static)
+      for (std::ptrdiff_t q = 0; q < pairs_of_particles; ++q)
+        {
+          const std::ptrdiff_t p0 = 2 * q, p1 = std::min(p0 + 1, n - 1);
+          std::uint32_t        e0 = incidence_first[p0],
+                        end0      = incidence_first[p0 + 1];
+          std::uint32_t e1        = p1 > p0 ? incidence_first[p1] : end0,
+                        end1      = p1 > p0 ? incidence_first[p1 + 1] : end0;
+          Eigen::Vector3d f0 = Eigen::Vector3d::Zero(), f1 = f0;
+          for (; e0 < end0 && e1 < end1; ++e0, ++e1)
+            {
+              f0 += signed_pair_force(incidence[e0]);
+              f1 += signed_pair_force(incidence[e1]);
+            }
+          for (; e0 < end0; ++e0)
+            f0 += signed_pair_force(incidence[e0]);
+          for (; e1 < end1; ++e1)
+            f1 += signed_pair_force(incidence[e1]);
+          F.template segment<3>(3 * p0) = f0;
+          if (p1 > p0)
+            F.template segment<3>(3 * p1) = f1;
+        }
     }
-    for (int t = 0; t < threads; ++t)
-      loaded.add(thread_loaded[t]);
+    for (const LoadedContacts &block : block_loaded)
+      loaded.add(block);
   }
 } // namespace compax::dem
