@@ -1,6 +1,7 @@
 #include "dem/solver/block_sparse_matrix.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <stdexcept>
 
 namespace compax::dem
@@ -72,10 +73,13 @@ namespace compax::dem
   BlockSparseMatrix::vmult(Eigen::VectorXd       &dst,
                            const Eigen::VectorXd &src) const
   {
-    const std::size_t n = n_block_rows();
-    const double     *x = src.data();
-    double           *y = dst.data();
-    for (std::size_t i = 0; i < n; ++i)
+    const auto    n = static_cast<std::ptrdiff_t>(n_block_rows());
+    const double *x = src.data();
+    double       *y = dst.data();
+    // Rows are independent and each sums its blocks in column order, so
+    // the product is the same on any number of threads.
+#pragma omp parallel for schedule(static) if (n >= parallel_block_rows)
+    for (std::ptrdiff_t i = 0; i < n; ++i)
       {
         double y0 = 0.0, y1 = 0.0, y2 = 0.0;
         for (std::uint32_t k = row_start[i]; k < row_start[i + 1]; ++k)

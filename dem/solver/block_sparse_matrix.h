@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -65,7 +66,11 @@ namespace compax::dem
     void
     set_zero();
 
-    /// dst = A src.
+    /// Block rows from which vmult() shares the rows among the threads
+    /// (below, a parallel region costs more than it shares).
+    static constexpr std::ptrdiff_t parallel_block_rows = 2048;
+
+    /// dst = A src; the same to the bit on any number of threads.
     void
     vmult(Eigen::VectorXd &dst, const Eigen::VectorXd &src) const;
 

@@ -55,9 +55,17 @@ namespace compax::dem
           double             force_floor = 0.0) override;
 
   private:
-    /// d = -H g by the two-loop recursion over the stored pairs.
-    void
+    /// d = -H g by the two-loop recursion over the stored pairs; returns
+    /// the slope g.d. On a large bed every thread shares its passes, and
+    /// its dot products are summed over fixed blocks in block order, so d
+    /// is the same on any number of threads.
+    double
     search_direction();
+
+    /// The recursion with Eigen's whole-vector dot products, for small
+    /// beds.
+    double
+    plain_search_direction();
 
     /// Stores the pair (s, y) if its curvature s.y is positive.
     void
@@ -66,8 +74,12 @@ namespace compax::dem
     int                          memory;
     std::vector<Eigen::VectorXd> s_history, y_history;
     std::vector<double>          rho, alpha;
-    int                          n_stored = 0, newest = -1;
-    double                       scaling = 1.0;
+    /// Each thread's alphas of the two-loop recursion (memory per thread).
+    std::vector<double> thread_alpha;
+    /// The blocks' terms of a dot product, two buffers used in turn.
+    std::vector<double> block_partials[2];
+    int                 n_stored = 0, newest = -1;
+    double              scaling = 1.0;
 
     Eigen::VectorXd g, g_trial, d, x0, s, y, inverse_diagonal;
   };

@@ -3,9 +3,12 @@
 #include "dem/solver/least_squares_trust_region.h"
 #include "dem/solver/load_stepper.h"
 #include "tests/support/gonzalez_material1.h"
+#include "tests/support/pressed_lattice.h"
 #include "tests/support/sphere_column.h"
 
 #include <gtest/gtest.h>
+
+#include <omp.h>
 
 #include <cmath>
 #include <vector>
@@ -247,6 +250,42 @@ TEST(SolverEquilibrium, LbfgsRelaxesAColumnToTheClosedForm)
   ASSERT_TRUE(r.converged) << r.iterations << " evaluations, residual "
                            << r.relative_residual;
   expect_column_closed_form(bed, model, N, total, tolerance);
+}
+
+/// L-BFGS takes the same path on any number of threads: on a bed large
+/// enough for the threaded two-loop recursion (2744 jittered spheres of a
+/// pressed simple cubic lattice, which comes apart to a force-free state
+/// after 66 evaluations), the first 60 evaluations end at the same
+/// positions to the bit on one, two and three threads, and lower the
+/// largest net force.
+TEST(SolverEquilibrium, LbfgsTakesTheSamePathOnAnyNumberOfThreads)
+{
+  const ContactModel model = compax::testing::material1::contact_model();
+  const int          threads_before = omp_get_max_threads();
+  const auto         largest_force  = [&](Bed &bed) {
+    ContactAssembler assembler;
+    Eigen::VectorXd  F;
+    assembler.residual(bed, model, F);
+    return max_particle_norm(F);
+  };
+  std::vector<Bed> relaxed;
+  for (const int threads : {1, 2, 3})
+    {
+      omp_set_num_threads(threads);
+      Bed              bed    = compax::testing::pressed_lattice(model, R, 14);
+      const double     before = largest_force(bed);
+      LbfgsRelaxation  lbfgs;
+      const FireResult r = lbfgs.relax(bed, model, 1e-9, 60);
+      EXPECT_EQ(r.iterations, 60) << threads << " threads";
+      EXPECT_LT(largest_force(bed), 0.5 * before) << threads << " threads";
+      relaxed.push_back(std::move(bed));
+    }
+  omp_set_num_threads(threads_before);
+  for (std::size_t t = 1; t < relaxed.size(); ++t)
+    for (std::size_t i = 0; i < relaxed[0].particles.size(); ++i)
+      ASSERT_EQ(relaxed[t].particles.positions[i],
+                relaxed[0].particles.positions[i])
+        << t + 1 << " threads, sphere " << i;
 }
 
 /// The progress reports of a relaxation (reported at every evaluation with
