@@ -94,7 +94,8 @@ namespace compax::dem
     // The two-loop recursion, in passes over the vectors that each fuse an
     // update of d with the dot product the next update needs. Each dot
     // product is summed over fixed blocks in block order, so d is the same
-    // whether one thread or several share the passes.
+    // whether one thread or several share the passes (one thread is a team
+    // of one: the same passes at the cost of a few barriers).
     const Eigen::Index n = g.size();
     const auto n_blocks  = static_cast<std::ptrdiff_t>((n + direction_block - 1)
                                                       / direction_block);
@@ -171,16 +172,6 @@ namespace compax::dem
     };
     thread_alpha.resize(static_cast<std::size_t>(memory)
                         * static_cast<std::size_t>(omp_get_max_threads()));
-    if (omp_get_max_threads() == 1)
-      return two_loop(
-        [&](const auto &update) {
-          double sum = 0.0;
-          for (std::ptrdiff_t b = 0; b < n_blocks; ++b)
-            sum += update(b * direction_block, block_length(b));
-          return sum;
-        },
-        thread_alpha.data());
-
     for (std::vector<double> &partials : block_partials)
       partials.resize(n_blocks);
     double slope = 0.0;
