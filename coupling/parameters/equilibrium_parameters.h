@@ -10,7 +10,8 @@ namespace compax::coupling
 {
   /// Declares, in the current subsection, the convergence entries of the
   /// particle equilibrium solver: Force tolerance, Step tolerance, Maximum
-  /// iterations (per load step or sub-step). @p force_floor_note, if not
+  /// iterations (per load step or sub-step), and Stall relaxation, the
+  /// minimiser of a stalled Newton iteration. @p force_floor_note, if not
   /// empty, is appended to the documentation of Force tolerance.
   void
   declare_equilibrium_tolerances(dealii::ParameterHandler &prm,

@@ -139,22 +139,27 @@ namespace compax::dem
           }
         if (it - best_at >= opts.stall_iterations && opts.fire_iterations > 0)
           {
-            // Newton crawls: the bed is rearranging. Relax with FIRE.
+            // Newton crawls: the bed is rearranging. Relax it.
             const double target
               = opts.fire_below_residual
                   ? std::min(opts.fire_tolerance,
                              std::max(opts.force_tolerance,
                                       0.01 * result.relative_residual))
                   : opts.fire_tolerance;
-            const auto       tf = clock_type::now();
-            const FireResult fr = fire.relax(system,
-                                             target,
-                                             opts.fire_iterations,
-                                             opts.force_floor);
+            const auto  tf = clock_type::now();
+            Relaxation &relaxation
+              = opts.stall_relaxation
+                    == EquilibriumOptions::StallRelaxation::lbfgs
+                  ? static_cast<Relaxation &>(lbfgs)
+                  : static_cast<Relaxation &>(fire);
+            const FireResult fr = relaxation.relax(system,
+                                                   target,
+                                                   opts.fire_iterations,
+                                                   opts.force_floor);
             result.work.fire_seconds += seconds_since(tf);
             result.work.fire_iterations += fr.iterations;
             if (opts.trace)
-              *opts.trace << "  newton it " << it << " stalled: FIRE "
+              *opts.trace << "  newton it " << it << " stalled: relaxed in "
                           << fr.iterations << '\n';
             assemble();
             result.relative_residual = relative();

@@ -5,6 +5,7 @@
 #include "dem/solver/contact_assembler.h"
 #include "dem/solver/equilibrium_system.h"
 #include "dem/solver/fire_relaxation.h"
+#include "dem/solver/lbfgs_relaxation.h"
 #include "dem/solver/newton_krylov.h"
 #include "dem/solver/residual_norms.h"
 #include "dem/solver/solver_work.h"
@@ -62,12 +63,23 @@ namespace compax::dem
     double initial_radius = 0.05;
     double max_radius     = 0.5;
     /// Newton iterations without a tenfold drop of the residual after which
-    /// the solver relaxes the bed with FIRE before going on (unjammed beds).
+    /// the solver relaxes the bed (stall_relaxation) before going on.
     int stall_iterations = 8;
-    /// FIRE iterations per fallback.
+    /// The minimiser that relaxes a stalled Newton iteration.
+    enum class StallRelaxation
+    {
+      /// FIRE (Bitzek et al. 2006).
+      fire,
+      /// L-BFGS with the diagonal stiffness as its seed: a fifth faster on
+      /// the jammed compaction and unloading of the 6512-sphere die, slower
+      /// on its ejection (doc/benchmarks.md, stop 51).
+      lbfgs
+    };
+    StallRelaxation stall_relaxation = StallRelaxation::fire;
+    /// Iterations (FIRE) or residual evaluations (L-BFGS) per fallback.
     int fire_iterations = 5000;
-    /// Relative residual (max_i |F_i| / mean contact force) at which a FIRE
-    /// fallback hands back to Newton [-].
+    /// Relative residual (max_i |F_i| / mean contact force) at which a
+    /// fallback relaxation hands back to Newton [-].
     double fire_tolerance = 1e-3;
     /// The model Hessian of the trust-region subproblem. false: the
     /// assembled K; true: the system's matrix-free operator where it has
@@ -227,6 +239,7 @@ namespace compax::dem
     SteihaugCG                cg;
     NewtonKrylov              krylov;
     FireRelaxation            fire;
+    LbfgsRelaxation           lbfgs;
     TrialStep                 trial;
     Eigen::VectorXd           F, s, s_full, Ks, factor;
     TrustRadius               radius;
