@@ -5,6 +5,8 @@
 #include "input/parameter_file.h"
 #include "input/real_interval.h"
 
+#include <sstream>
+
 namespace compax::coupling
 {
   void
@@ -33,22 +35,29 @@ namespace compax::coupling
                       dealii::Patterns::Integer(1, 1000000),
                       "Trust-region Newton iterations per load step (or "
                       "sub-step) before it is cut back, in [1, 1e6].");
+    const dem::EquilibriumOptions defaults;
+    std::ostringstream            stall;
+    stall << "What relaxes the bed when the trust-region Newton stalls ("
+          << defaults.stall_iterations
+          << " iterations without a tenfold drop of the residual: a jammed "
+             "bed rearranging), at fixed internal variables, to "
+          << defaults.fire_tolerance << " of the mean contact force (at most "
+          << defaults.fire_iterations
+          << " iterations), before Newton goes on to the tolerances above: "
+             "fire (FIRE) or lbfgs (L-BFGS, as Protocol/Unjammed "
+             "equilibrium's). ";
     prm.declare_entry(
       "Stall relaxation",
       "fire",
       dealii::Patterns::Selection("fire|lbfgs"),
-      "What relaxes the bed when the trust-region Newton stalls (8 "
-      "iterations without a tenfold drop of the residual: a jammed bed "
-      "rearranging), at fixed internal variables, to 1e-3 of the mean "
-      "contact force (at most 5000 iterations), before Newton goes on to the "
-      "tolerances above: fire (FIRE) or lbfgs (L-BFGS, as Protocol/Unjammed "
-      "equilibrium's). Both stop at the same tolerance; they may reach "
-      "different equilibria of a rearranging bed, as any two solvers may. "
-      "Measured on the Sec. 5 studies of the 6512-sphere die "
-      "(doc/benchmarks.md, stop 51): lbfgs takes 17-23 % less time in the "
-      "jammed compaction and the unloading and 12-28 % more in the "
-      "ejection, about the same in all; the branches' punch pressures agree "
-      "within 1 %, their elastic recoveries within 17-34 %.");
+      stall.str()
+        + "Both stop at the same tolerance; they may reach "
+          "different equilibria of a rearranging bed, as any two solvers may. "
+          "Measured on the Sec. 5 studies of the 6512-sphere die "
+          "(doc/benchmarks.md, stop 51): lbfgs takes 17-23 % less time in the "
+          "jammed compaction and the unloading and 12-28 % more in the "
+          "ejection, about the same in all; the branches' punch pressures "
+          "agree within 1 %, their elastic recoveries within 17-34 %.");
   }
 
   void
