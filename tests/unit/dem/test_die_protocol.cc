@@ -30,6 +30,28 @@ namespace
     return ContactModel(ElastoplasticMaterial{5e9, 0.25, 150e6, 2.0}, 1.26e6);
   }
 
+  /// The jammed path of these tests: @p bed compacted to rho = 0.8 in 20
+  /// steps.
+  DieProtocol
+  compaction_to_080(const Bed &bed)
+  {
+    DieProtocol protocol;
+    protocol.compaction_targets
+      = density_targets(bed.relative_density(), 0.8, 20);
+    return protocol;
+  }
+
+  /// The largest |F_u - F_l| a record of a bed of @p n particles may show:
+  /// pair forces cancel in the sum of the particles' out-of-balance forces,
+  /// which leaves F_u - F_l (the die wall frictionless, radial), bounded by
+  /// N times the largest particle residual, plus rounding.
+  double
+  punch_imbalance_bound(const DieRecord &r, const std::size_t n)
+  {
+    return static_cast<double>(n) * r.residual * r.mean_contact_force
+           + 1e-12 * std::abs(r.upper_punch_force);
+  }
+
   /// Eq. (16)'s rho_min from the last two states of an unloading branch:
   /// where the secant through their punch forces reaches zero. The solid
   /// volume over the punch gap is the density, so 1/rho is linear in the gap.
@@ -52,12 +74,10 @@ namespace
 /// tolerance); unloading ends with a free upper punch and a lower density.
 TEST(DieProtocol, PunchForcesBalanceAndBranchesAreConsistent)
 {
-  const Bed          bed   = deposit(150, 3);
-  const ContactModel model = material1();
-  DieProtocol        protocol;
-  protocol.compaction_targets
-    = density_targets(bed.relative_density(), 0.8, 20);
-  protocol.unloading_points = {0.8};
+  const Bed          bed      = deposit(150, 3);
+  const ContactModel model    = material1();
+  DieProtocol        protocol = compaction_to_080(bed);
+  protocol.unloading_points   = {0.8};
   DieCompaction      die(bed, model, protocol);
   std::ostringstream csv;
   die.set_output(&csv, nullptr);
@@ -79,17 +99,10 @@ TEST(DieProtocol, PunchForcesBalanceAndBranchesAreConsistent)
           << r.step;
       else
         EXPECT_LE(r.residual, tol) << r.stage << " step " << r.step;
-      // Pair forces cancel in the sum of the particles' out-of-balance
-      // forces, which leaves F_u - F_l (die wall radial): bounded by N
-      // times the largest particle residual.
       if (!(r.stage == "compaction" && r.step == 0)) // the deposit
-        {
-          EXPECT_LE(std::abs(r.upper_punch_force - r.lower_punch_force),
-                    static_cast<double>(bed.particles.size()) * r.residual
-                        * r.mean_contact_force
-                      + 1e-12 * std::abs(r.upper_punch_force))
-            << r.stage << " step " << r.step;
-        }
+        EXPECT_LE(std::abs(r.upper_punch_force - r.lower_punch_force),
+                  punch_imbalance_bound(r, bed.particles.size()))
+          << r.stage << " step " << r.step;
     }
   EXPECT_TRUE(saw[0] && saw[1] && saw[2]);
 
@@ -254,7 +267,6 @@ TEST(DieProtocol, LeastSquaresPathBalancesEveryJammedState)
   ASSERT_NO_THROW(die.run());
   const double jamming      = 0.5e6;
   const double tol          = EquilibriumOptions{}.force_tolerance;
-  const double N            = static_cast<double>(bed.particles.size());
   double       first_jammed = 0.0;
   int          jammed = 0, loose = 0;
   for (const DieRecord &r : die.records())
@@ -264,8 +276,7 @@ TEST(DieProtocol, LeastSquaresPathBalancesEveryJammedState)
       // Every state, loose or not: the pair forces cancel in the sum of
       // the particles' residuals, which leaves F_u - F_l.
       EXPECT_LE(std::abs(r.upper_punch_force - r.lower_punch_force),
-                N * r.residual * r.mean_contact_force
-                  + 1e-12 * std::abs(r.upper_punch_force))
+                punch_imbalance_bound(r, bed.particles.size()))
         << r.step;
       const bool below
         = std::max(r.upper_punch_pressure, r.lower_punch_pressure) < jamming;
@@ -293,14 +304,11 @@ TEST(DieProtocol, LeastSquaresPathBalancesEveryJammedState)
 /// in both runs, are the same), so the option is in force.
 TEST(DieProtocol, LbfgsStallRelaxationBalancesEveryJammedState)
 {
-  const Bed          bed   = deposit(150, 3);
-  const ContactModel model = material1();
-  DieProtocol        protocol;
-  protocol.compaction_targets
-    = density_targets(bed.relative_density(), 0.8, 20);
-  protocol.eject   = false;
-  const double tol = EquilibriumOptions{}.force_tolerance;
-  const double N   = static_cast<double>(bed.particles.size());
+  const Bed          bed      = deposit(150, 3);
+  const ContactModel model    = material1();
+  DieProtocol        protocol = compaction_to_080(bed);
+  protocol.eject              = false;
+  const double tol            = EquilibriumOptions{}.force_tolerance;
 
   std::vector<long> relaxation_work;
   for (const auto stall : {EquilibriumOptions::StallRelaxation::fire,
@@ -318,8 +326,7 @@ TEST(DieProtocol, LbfgsStallRelaxationBalancesEveryJammedState)
           ++jammed;
           EXPECT_LE(r.residual, tol) << r.step;
           EXPECT_LE(std::abs(r.upper_punch_force - r.lower_punch_force),
-                    N * r.residual * r.mean_contact_force
-                      + 1e-12 * std::abs(r.upper_punch_force))
+                    punch_imbalance_bound(r, bed.particles.size()))
             << r.step;
         }
       EXPECT_GT(jammed, 5);
