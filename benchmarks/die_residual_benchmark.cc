@@ -3,9 +3,11 @@
 // hundreds of thousands of times: the §5 bed of Material 1 (6512 spheres of
 // R = 220 um in a 10 mm die), deposited and mapped affinely to a relative
 // density of 0.64, just past the jamming onset, so that most neighbours
-// touch. Argument: the number of OpenMP threads. The residual is the same
-// to the bit on every thread count (SolverStiffness tests); this reports
-// what the threads buy. Preparation is done once and not timed.
+// touch. Argument: the number of OpenMP threads. DieAssembly adds the
+// stiffness K (Newton's iterations, FIRE's masses, the L-BFGS seed). Both
+// are the same to the bit on every thread count (SolverStiffness tests);
+// this reports what the threads buy. Preparation is done once and not
+// timed.
 
 #include "benchmarks/material1_model.h"
 #include "dem/die/die_setup.h"
@@ -60,6 +62,27 @@ namespace
     state.counters["loaded"] = static_cast<double>(sums.n_loaded);
     omp_set_num_threads(threads_before);
   }
+
+  void
+  DieAssembly(benchmark::State &state)
+  {
+    const int threads_before = omp_get_max_threads();
+    omp_set_num_threads(static_cast<int>(state.range(0)));
+    Bed               bed = compacted_bed();
+    ContactAssembler  assembler;
+    Eigen::VectorXd   F;
+    BlockSparseMatrix K;
+    assembler.assemble(bed, material1_model(), F, K);
+    for (auto _ : state)
+      {
+        assembler.assemble(bed, material1_model(), F, K);
+        benchmark::DoNotOptimize(F.data());
+        benchmark::DoNotOptimize(K.block(0));
+      }
+    state.counters["pairs"] = static_cast<double>(bed.contacts.pairs.size());
+    omp_set_num_threads(threads_before);
+  }
 } // namespace
 
 BENCHMARK(DieResidual)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(DieAssembly)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);

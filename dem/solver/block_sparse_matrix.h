@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -65,6 +66,16 @@ namespace compax::dem
 
     void
     set_zero();
+
+    /// Zeroes the blocks of block row i only: a thread that owns the row
+    /// clears it before it assembles into it.
+    void
+    set_row_zero(std::size_t i)
+    {
+      std::fill(values.begin() + 9 * std::size_t{row_start[i]},
+                values.begin() + 9 * std::size_t{row_start[i + 1]},
+                0.0);
+    }
 
     /// Block rows from which vmult() shares the rows among the threads
     /// (below, a parallel region costs more than it shares).

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -87,9 +88,9 @@ namespace compax::dem
 
   /**
    * Beds with at least this many candidate pairs evaluate the pairs of a
-   * residual on every OpenMP thread (PairAssembler::residual()). Below it
-   * the threads' start costs about what they save. A bed type may set its
-   * own.
+   * residual, and of an assembly with the stiffness, on every OpenMP thread
+   * (PairAssembler::residual(), PairAssembler::assemble()). Below it the
+   * threads' start costs about what they save. A bed type may set its own.
    */
   template <typename BedType>
   inline constexpr std::size_t parallel_residual_pairs = 20000;
@@ -157,6 +158,40 @@ namespace compax::dem
                                 Eigen::VectorXd &F,
                                 LoadedContacts  &loaded);
 
+    /// The pairs' forces into F and their blocks into K on every thread:
+    /// add_pairs_in_order<true>() to the bit.
+    template <typename Response>
+    void
+    add_pair_terms_in_parallel(const BedType     &bed,
+                               const Response    &response,
+                               Eigen::VectorXd   &F,
+                               BlockSparseMatrix &K,
+                               LoadedContacts    &loaded);
+
+    /**
+     * The two passes of a threaded evaluation, which make its sums
+     * independent of the number of threads: compute_pair_terms() on every
+     * thread, then, after its barrier, @p particle_pass(), an orphaned
+     * `omp for` over the particles that sums each one's pairs in list
+     * order. The blocks' counts of loaded contacts are added to @p loaded
+     * in block order. Per-pair buffers are resized, so they allocate only
+     * when the list grew.
+     */
+    template <bool with_stiffness, typename Response, typename ParticlePass>
+    void
+    in_two_passes(const BedType      &bed,
+                  const Response     &response,
+                  LoadedContacts     &loaded,
+                  const ParticlePass &particle_pass);
+
+    /// Pair k's terms on every thread into pair_force[k] (and, with
+    /// stiffness, pair_adds[k] and pair_block[k]); each block of the
+    /// loaded-contact count into block_loaded. Called inside a parallel
+    /// region: the caller's threads share the pairs.
+    template <bool with_stiffness, typename Response>
+    void
+    compute_pair_terms(const BedType &bed, const Response &response);
+
     /// Entry e of `incidence` as the force it adds to its particle: -P n
     /// of its pair on particle i, +P n on particle j. f + (-P n) is
     /// f - P n to the bit: a sign, not a branch.
@@ -178,6 +213,11 @@ namespace compax::dem
     /// Pair k's force on its particle j, P n [N] (zero where the pair
     /// carries nothing), of the last parallel residual.
     std::vector<Eigen::Vector3d> pair_force;
+    /// Pair k's stiffness block k (PairBlock::entries()) of the last
+    /// parallel assembly; pair_adds[k]: whether pair k adds anything
+    /// (pair_response()).
+    std::vector<std::array<double, 9>> pair_block;
+    std::vector<char>                  pair_adds;
     /// Block b of the count of loaded contacts (starts_loaded_block()):
     /// pairs block_first[b] to block_first[b + 1] - 1; and its count in the
     /// last parallel residual.
@@ -216,7 +256,6 @@ namespace compax::dem
                     bed.contacts.revision(),
                     bed.contacts.pairs,
                     K);
-    K.set_zero();
     return evaluate<true>(bed, F, &K, branch);
   }
 
@@ -249,7 +288,13 @@ namespace compax::dem
         const auto response = [branch](const auto &c, const double gamma) {
           return contact_response(c, gamma, branch);
         };
-        add_pairs_in_order<true>(bed, response, F, K, loaded);
+        if (n_pairs >= parallel_pairs && omp_get_max_threads() > 1)
+          add_pair_terms_in_parallel(bed, response, F, *K, loaded);
+        else
+          {
+            K->set_zero();
+            add_pairs_in_order<true>(bed, response, F, K, loaded);
+          }
       }
     add_wall_terms<with_stiffness>(bed, F, K, sums, loaded);
     loaded.report(sums);
@@ -327,25 +372,8 @@ namespace compax::dem
     // Two passes, so that F does not depend on the number of threads: the
     // pairs' forces on any thread, then each particle's sum of its pairs'
     // forces in list order, which is add_pairs_in_order()'s sum to the bit.
-    const auto       &pairs       = bed.contacts.pairs;
-    const std::size_t n_pairs     = pairs.size();
-    const std::size_t n_particles = bed.particles.size();
-    refresh_incidence(n_particles, bed.contacts.revision(), pairs);
-    pair_force.resize(n_pairs);
-    const std::size_t n_blocks = block_first.size() - 1;
-    block_loaded.resize(n_blocks);
-    const auto blocks = static_cast<std::ptrdiff_t>(n_blocks);
-    const auto n      = static_cast<std::ptrdiff_t>(n_particles);
-#pragma omp parallel
-    {
-#pragma omp for schedule(static)
-      for (std::ptrdiff_t b = 0; b < blocks; ++b)
-        {
-          LoadedContacts block;
-          for (std::size_t k = block_first[b]; k < block_first[b + 1]; ++k)
-            pair_force[k] = pair_force_terms(bed, k, response, block);
-          block_loaded[b] = block;
-        }
+    const auto n = static_cast<std::ptrdiff_t>(bed.particles.size());
+    in_two_passes<false>(bed, response, loaded, [&] {
       // Every pair's force is known (the loop's barrier). Each particle's
       // sum is a chain of dependent additions: two particles at a time, so
       // that the two chains overlap.
@@ -372,8 +400,113 @@ namespace compax::dem
           if (p1 > p0)
             F.template segment<3>(3 * p1) = f1;
         }
+    });
+  }
+
+  template <typename BedType>
+  template <bool with_stiffness, typename Response, typename ParticlePass>
+  void
+  PairAssembler<BedType>::in_two_passes(const BedType      &bed,
+                                        const Response     &response,
+                                        LoadedContacts     &loaded,
+                                        const ParticlePass &particle_pass)
+  {
+    const std::size_t n_pairs = bed.contacts.pairs.size();
+    refresh_incidence(bed.particles.size(),
+                      bed.contacts.revision(),
+                      bed.contacts.pairs);
+    pair_force.resize(n_pairs);
+    if constexpr (with_stiffness)
+      {
+        pair_block.resize(n_pairs);
+        pair_adds.resize(n_pairs);
+      }
+    block_loaded.resize(block_first.size() - 1);
+#pragma omp parallel
+    {
+      compute_pair_terms<with_stiffness>(bed, response);
+      particle_pass();
     }
     for (const LoadedContacts &block : block_loaded)
       loaded.add(block);
+  }
+
+  template <typename BedType>
+  template <bool with_stiffness, typename Response>
+  void
+  PairAssembler<BedType>::compute_pair_terms(const BedType  &bed,
+                                             const Response &response)
+  {
+    const auto blocks = static_cast<std::ptrdiff_t>(block_first.size() - 1);
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t b = 0; b < blocks; ++b)
+      {
+        LoadedContacts block;
+        for (std::size_t k = block_first[b]; k < block_first[b + 1]; ++k)
+          {
+            if constexpr (!with_stiffness)
+              pair_force[k] = pair_force_terms(bed, k, response, block);
+            else
+              {
+                Eigen::Vector3d n;
+                double          dist;
+                ContactResponse r;
+                pair_adds[k] = pair_response(bed, k, response, n, dist, r);
+                if (!pair_adds[k])
+                  continue;
+                pair_force[k] = r.force * n;
+                PairBlock(r, dist).entries(n, pair_block[k].data());
+                block.add(r);
+              }
+          }
+        block_loaded[b] = block;
+      }
+  }
+
+  template <typename BedType>
+  template <typename Response>
+  void
+  PairAssembler<BedType>::add_pair_terms_in_parallel(const BedType   &bed,
+                                                     const Response  &response,
+                                                     Eigen::VectorXd &F,
+                                                     BlockSparseMatrix &K,
+                                                     LoadedContacts    &loaded)
+  {
+    // As add_pair_forces_in_parallel(), with the blocks: each particle
+    // clears its own row of K (its diagonal block and its blocks (p, q)),
+    // which no other particle writes, and sums its pairs' terms into it in
+    // list order, so the sums are add_pairs_in_order<true>()'s to the bit
+    // on any number of threads. A pair that adds nothing is skipped, as
+    // there.
+    const auto n = static_cast<std::ptrdiff_t>(bed.particles.size());
+    in_two_passes<true>(bed, response, loaded, [&] {
+#pragma omp for schedule(static)
+      for (std::ptrdiff_t p = 0; p < n; ++p)
+        {
+          K.set_row_zero(p);
+          Eigen::Vector3d f        = Eigen::Vector3d::Zero();
+          double *const   diagonal = K.block(K.diagonal_slot(p));
+          for (std::uint32_t e = incidence_first[p]; e < incidence_first[p + 1];
+               ++e)
+            {
+              const std::uint32_t side = incidence[e];
+              const std::size_t   k    = side >> 1;
+              if (!pair_adds[k])
+                continue;
+              f += signed_pair_force(side);
+              // +k on the diagonal block, -k on (p, q): scatter_pair()'s
+              // sign * k to the bit.
+              const double *const k_entries = pair_block[k].data();
+              double *const       off_diagonal
+                = K.block((side & 1u) ? pattern.ji(k) : pattern.ij(k));
+              for (int m = 0; m < 9; ++m)
+                {
+                  diagonal[m] += k_entries[m];
+                  off_diagonal[m] -= k_entries[m];
+                }
+            }
+          F.template segment<3>(3 * p) = f;
+        }
+    });
   }
 } // namespace compax::dem

@@ -27,13 +27,23 @@ namespace compax::dem
     {
     }
 
+    /// The 9 row-major entries of a n n^T + b I into @p entries.
+    void
+    entries(const Eigen::Vector3d &n, double *entries) const
+    {
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          entries[3 * r + c] = a * n[r] * n[c] + (r == c ? b : 0.0);
+    }
+
     /// block += sign * (a n n^T + b I), row-major 3x3.
     void
     add_to(double *block, const double sign, const Eigen::Vector3d &n) const
     {
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c)
-          block[3 * r + c] += sign * (a * n[r] * n[c] + (r == c ? b : 0.0));
+      double k[9];
+      entries(n, k);
+      for (int e = 0; e < 9; ++e)
+        block[e] += sign * k[e];
     }
 
     Eigen::Matrix3d

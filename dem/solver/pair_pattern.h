@@ -25,8 +25,11 @@ namespace compax::dem
             const Pairs        &pairs,
             BlockSparseMatrix  &K)
     {
+      // The matrix's size as well as its address: another matrix may
+      // live at the address of one destroyed since.
       if (revision == pattern_revision && n_particles == pattern_size
-          && &K == pattern_matrix)
+          && &K == pattern_matrix && K.n_block_rows() == n_particles
+          && K.n_blocks() == pattern_blocks)
         return;
       scratch.clear();
       scratch.reserve(pairs.size());
@@ -42,6 +45,7 @@ namespace compax::dem
       pattern_revision = revision;
       pattern_size     = n_particles;
       pattern_matrix   = &K;
+      pattern_blocks   = K.n_blocks();
     }
 
     /// Slot of block (i, j) of pair k.
@@ -62,6 +66,7 @@ namespace compax::dem
     std::uint64_t              pattern_revision = ~std::uint64_t(0);
     std::size_t                pattern_size     = 0;
     const BlockSparseMatrix   *pattern_matrix   = nullptr;
+    std::size_t                pattern_blocks   = 0;
     std::vector<std::uint32_t> slots;
     std::vector<ParticlePair>  scratch;
   };

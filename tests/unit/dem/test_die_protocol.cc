@@ -100,9 +100,11 @@ TEST(DieProtocol, PunchForcesBalanceAndBranchesAreConsistent)
       else
         EXPECT_LE(r.residual, tol) << r.stage << " step " << r.step;
       if (!(r.stage == "compaction" && r.step == 0)) // the deposit
-        EXPECT_LE(std::abs(r.upper_punch_force - r.lower_punch_force),
-                  punch_imbalance_bound(r, bed.particles.size()))
-          << r.stage << " step " << r.step;
+        {
+          EXPECT_LE(std::abs(r.upper_punch_force - r.lower_punch_force),
+                    punch_imbalance_bound(r, bed.particles.size()))
+            << r.stage << " step " << r.step;
+        }
     }
   EXPECT_TRUE(saw[0] && saw[1] && saw[2]);
 

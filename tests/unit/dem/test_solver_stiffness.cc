@@ -142,6 +142,55 @@ TEST(SolverStiffness, ThreadedResidualIsTheSerialSumToTheBit)
   EXPECT_NEAR(net[2], -punches, 1e-9 * std::abs(punches) + 1e-9);
 }
 
+/// The assembly of F and K of a bed large enough to be evaluated on every
+/// thread is the serial one to the bit on 1, 2 and 3 threads, on both
+/// branches of the law, with histories committed (Eq. 13 at the pressed
+/// state, so the unloading branch differs from the current one); and its
+/// F is the residual's. Each assembly has a matrix of its own (the
+/// pattern follows it, even at the address of a destroyed one).
+TEST(SolverStiffness, ThreadedAssemblyIsTheSerialOneToTheBit)
+{
+  const ContactModel model = material1::contact_model();
+  Bed bed = compax::testing::pressed_lattice(model, material1::R, 24);
+  ASSERT_GE(bed.contacts.pairs.size(), ContactAssembler::parallel_pairs);
+  ContactAssembler assembler;
+  Eigen::VectorXd  F;
+  assembler.residual(bed, model, F);
+  ASSERT_GT(bed.contacts.update_histories(bed.particles, bed.walls).formed, 0u);
+
+  const int                        threads_before = omp_get_max_threads();
+  std::vector<std::vector<double>> serial_values;
+  for (const ContactBranch branch :
+       {ContactBranch::current, ContactBranch::unloading})
+    {
+      omp_set_num_threads(1);
+      BlockSparseMatrix K_serial;
+      Eigen::VectorXd   F_serial, residual;
+      const ContactSums s_serial
+        = assembler.assemble(bed, model, F_serial, K_serial, branch);
+      ASSERT_GT(s_serial.n_loaded, bed.particles.size());
+      const std::vector<double> serial(K_serial.block(0),
+                                       K_serial.block(K_serial.n_blocks()));
+      serial_values.push_back(serial);
+      for (const int threads : {2, 3})
+        {
+          omp_set_num_threads(threads);
+          BlockSparseMatrix K;
+          const ContactSums s = assembler.assemble(bed, model, F, K, branch);
+          EXPECT_EQ(s.n_loaded, s_serial.n_loaded) << threads;
+          EXPECT_EQ(s.mean_force, s_serial.mean_force) << threads;
+          EXPECT_TRUE(F == F_serial) << threads << " threads";
+          EXPECT_TRUE(std::equal(serial.begin(), serial.end(), K.block(0)))
+            << threads << " threads";
+          assembler.residual(bed, model, residual);
+          EXPECT_TRUE(residual == F) << threads << " threads";
+        }
+    }
+  omp_set_num_threads(threads_before);
+  // The branches differ: the plastic contacts unload elastically.
+  EXPECT_FALSE(serial_values[0] == serial_values[1]);
+}
+
 /// K x on a bed above vmult()'s threading threshold (a pressed lattice of
 /// 13 824 spheres): the same to the bit on 1, 2 and 3 threads, and equal
 /// to Eigen's product with the same matrix as an Eigen::SparseMatrix to
