@@ -177,6 +177,7 @@ TEST(SolverStiffness, ThreadedAssemblyIsTheSerialOneToTheBit)
           omp_set_num_threads(threads);
           BlockSparseMatrix K;
           const ContactSums s = assembler.assemble(bed, model, F, K, branch);
+          ASSERT_EQ(K.n_blocks(), K_serial.n_blocks());
           EXPECT_EQ(s.n_loaded, s_serial.n_loaded) << threads;
           EXPECT_EQ(s.mean_force, s_serial.mean_force) << threads;
           EXPECT_TRUE(F == F_serial) << threads << " threads";
