@@ -27,9 +27,8 @@ namespace compax::dem
     {
       // The matrix's size as well as its address: another matrix may
       // live at the address of one destroyed since.
-      if (revision == pattern_revision && n_particles == pattern_size
-          && &K == pattern_matrix && K.n_block_rows() == n_particles
-          && K.n_blocks() == pattern_blocks)
+      if (revision == pattern_revision && &K == pattern_matrix
+          && K.n_block_rows() == n_particles && K.n_blocks() == pattern_blocks)
         return;
       scratch.clear();
       scratch.reserve(pairs.size());
@@ -43,7 +42,6 @@ namespace compax::dem
           slots[2 * k + 1] = K.slot(pairs[k].j, pairs[k].i);
         }
       pattern_revision = revision;
-      pattern_size     = n_particles;
       pattern_matrix   = &K;
       pattern_blocks   = K.n_blocks();
     }
@@ -64,7 +62,6 @@ namespace compax::dem
 
   private:
     std::uint64_t              pattern_revision = ~std::uint64_t(0);
-    std::size_t                pattern_size     = 0;
     const BlockSparseMatrix   *pattern_matrix   = nullptr;
     std::size_t                pattern_blocks   = 0;
     std::vector<std::uint32_t> slots;
