@@ -5,13 +5,25 @@
 
 namespace compax::dem
 {
+  namespace
+  {
+    /// Particles from which moved_too_far() shares its loop among the
+    /// threads: the stiffness product's threshold
+    /// (BlockSparseMatrix::parallel_block_rows), below which a parallel
+    /// region costs more than it shares.
+    constexpr std::ptrdiff_t parallel_particles = 2048;
+  } // namespace
+
   bool
   ContactSet::moved_too_far(const ParticleSystem &particles,
                             const DieWalls       &die) const
   {
     const std::vector<Eigen::Vector3d> &x0     = built_positions();
     double                              max_sq = 0.0;
-    for (std::size_t i = 0; i < particles.size(); ++i)
+    // Asked before every residual; a maximum is exact in any order.
+    const auto n = static_cast<std::ptrdiff_t>(particles.size());
+#pragma omp parallel for reduction(max : max_sq) if (n >= parallel_particles)
+    for (std::ptrdiff_t i = 0; i < n; ++i)
       max_sq = std::max(max_sq, (particles.positions[i] - x0[i]).squaredNorm());
     const double max_move  = std::sqrt(max_sq);
     double       wall_move = 0.0;

@@ -24,6 +24,23 @@ namespace compax::dem
     /// spheres: 2.3 us serial, 9 us on two threads; 512 spheres about
     /// even), and their paths stay those of Eigen's dot products.
     constexpr std::ptrdiff_t parallel_direction_blocks = 8;
+    /// Entries of a vector from which its updates are shared among the
+    /// threads: the recursion's threshold.
+    constexpr Eigen::Index parallel_entries
+      = direction_block * parallel_direction_blocks;
+
+    /// Runs update(j) for every entry j in [0, n), on every thread for a
+    /// large bed. Each entry is written by its own update alone, so the
+    /// result is the same on any number of threads.
+    template <typename Update>
+    void
+    for_each_entry(const Eigen::Index n, const Update &update)
+    {
+#pragma omp parallel for schedule(static) if (n >= parallel_entries)
+      for (Eigen::Index j = 0; j < n; ++j)
+        update(j);
+    }
+
     /// Trial points of one line search before it gives up.
     constexpr int max_trials = 20;
     /// Accepted iterations between refreshes of the preconditioner.
@@ -199,20 +216,19 @@ namespace compax::dem
   }
 
   void
-  LbfgsRelaxation::remember(const Eigen::VectorXd &s_new,
-                            const Eigen::VectorXd &y_new)
+  LbfgsRelaxation::remember(Eigen::VectorXd &s_new, Eigen::VectorXd &y_new)
   {
     const double sy = s_new.dot(y_new);
     // A pair without positive curvature (a saddle, or a contact list
     // change) would make H indefinite: skip it.
     if (!(sy > 1e-12 * s_new.norm() * y_new.norm()))
       return;
-    newest            = (newest + 1) % memory;
-    s_history[newest] = s_new;
-    y_history[newest] = y_new;
-    rho[newest]       = 1.0 / sy;
-    n_stored          = std::min(n_stored + 1, memory);
-    scaling           = sy / y_new.dot(y_new.cwiseProduct(inverse_diagonal));
+    scaling = sy / y_new.dot(y_new.cwiseProduct(inverse_diagonal));
+    newest  = (newest + 1) % memory;
+    s_history[newest].swap(s_new);
+    y_history[newest].swap(y_new);
+    rho[newest] = 1.0 / sy;
+    n_stored    = std::min(n_stored + 1, memory);
   }
 
   FireResult
@@ -270,7 +286,9 @@ namespace compax::dem
         const double a_max = cap / dmax;
 
         // Line search on the directional derivative phi'(a) = g(x0+a d).d.
-        x0          = x;
+        const Eigen::Index n_x = x.size();
+        x0.resize(n_x);
+        for_each_entry(n_x, [&](const Eigen::Index j) { x0[j] = x[j]; });
         double a    = std::min(1.0, a_max);
         double a_lo = 0.0, slope_lo = slope0;
         double a_hi = std::numeric_limits<double>::infinity(), slope_hi = 0.0;
@@ -278,7 +296,9 @@ namespace compax::dem
         ContactSums trial_sums;
         for (int t = 0; t < max_trials && evaluations < max_evaluations; ++t)
           {
-            x          = x0 + a * d;
+            for_each_entry(n_x, [&](const Eigen::Index j) {
+              x[j] = x0[j] + a * d[j];
+            });
             trial_sums = system.residual(g_trial);
             ++evaluations;
             const double slope = g_trial.dot(d);
@@ -331,8 +351,12 @@ namespace compax::dem
             trial_sums = system.residual(g_trial);
             ++evaluations;
           }
-        s.noalias() = a * d;
-        y.noalias() = g_trial - g;
+        s.resize(n_x);
+        y.resize(n_x);
+        for_each_entry(n_x, [&](const Eigen::Index j) {
+          s[j] = a * d[j];
+          y[j] = g_trial[j] - g[j];
+        });
         remember(s, y);
         g.swap(g_trial);
         sums = trial_sums;

@@ -67,9 +67,11 @@ namespace compax::dem
     double
     plain_search_direction();
 
-    /// Stores the pair (s, y) if its curvature s.y is positive.
+    /// Stores the pair (s, y) if its curvature s.y is positive, by
+    /// swapping it into the history: s and y then hold an old pair's
+    /// buffers, which the next iteration overwrites.
     void
-    remember(const Eigen::VectorXd &s, const Eigen::VectorXd &y);
+    remember(Eigen::VectorXd &s, Eigen::VectorXd &y);
 
     int                          memory;
     std::vector<Eigen::VectorXd> s_history, y_history;

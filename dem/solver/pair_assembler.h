@@ -267,10 +267,17 @@ namespace compax::dem
                                    BlockSparseMatrix  *K,
                                    const ContactBranch branch)
   {
-    F.setZero(3 * bed.particles.size());
     ContactSums       sums;
     LoadedContacts    loaded;
     const std::size_t n_pairs = bed.contacts.pairs.size();
+    const bool        in_parallel
+      = n_pairs >= parallel_pairs && omp_get_max_threads() > 1;
+    // The threaded passes write every particle's sum into F; the serial
+    // loop adds into it.
+    if (in_parallel)
+      F.resize(3 * bed.particles.size());
+    else
+      F.setZero(3 * bed.particles.size());
     if constexpr (!with_stiffness)
       {
         // A residual is on the current branch. One thread sums the pairs
@@ -278,7 +285,7 @@ namespace compax::dem
         const auto response = [](const auto &c, const double gamma) {
           return contact_response(c, gamma, ContactBranch::current);
         };
-        if (n_pairs >= parallel_pairs && omp_get_max_threads() > 1)
+        if (in_parallel)
           add_pair_forces_in_parallel(bed, response, F, loaded);
         else
           add_pairs_in_order<false>(bed, response, F, nullptr, loaded);
@@ -288,7 +295,7 @@ namespace compax::dem
         const auto response = [branch](const auto &c, const double gamma) {
           return contact_response(c, gamma, branch);
         };
-        if (n_pairs >= parallel_pairs && omp_get_max_threads() > 1)
+        if (in_parallel)
           add_pair_terms_in_parallel(bed, response, F, *K, loaded);
         else
           {
