@@ -44,15 +44,34 @@ namespace
     return bed;
   }
 
+  /// Runs the enclosing benchmark on the number of threads its argument
+  /// names, and gives the process its thread count back afterwards.
+  class ThreadsOfArgument
+  {
+  public:
+    explicit ThreadsOfArgument(const benchmark::State &state)
+        : before(omp_get_max_threads())
+    {
+      omp_set_num_threads(static_cast<int>(state.range(0)));
+    }
+
+    ~ThreadsOfArgument()
+    {
+      omp_set_num_threads(before);
+    }
+
+  private:
+    int before;
+  };
+
   void
   DieResidual(benchmark::State &state)
   {
-    const int threads_before = omp_get_max_threads();
-    omp_set_num_threads(static_cast<int>(state.range(0)));
-    Bed              bed = compacted_bed();
-    ContactAssembler assembler;
-    Eigen::VectorXd  F;
-    ContactSums      sums = assembler.residual(bed, material1_model(), F);
+    const ThreadsOfArgument threads(state);
+    Bed                     bed = compacted_bed();
+    ContactAssembler        assembler;
+    Eigen::VectorXd         F;
+    ContactSums sums = assembler.residual(bed, material1_model(), F);
     for (auto _ : state)
       {
         sums = assembler.residual(bed, material1_model(), F);
@@ -60,18 +79,16 @@ namespace
       }
     state.counters["pairs"]  = static_cast<double>(bed.contacts.pairs.size());
     state.counters["loaded"] = static_cast<double>(sums.n_loaded);
-    omp_set_num_threads(threads_before);
   }
 
   void
   DieAssembly(benchmark::State &state)
   {
-    const int threads_before = omp_get_max_threads();
-    omp_set_num_threads(static_cast<int>(state.range(0)));
-    Bed               bed = compacted_bed();
-    ContactAssembler  assembler;
-    Eigen::VectorXd   F;
-    BlockSparseMatrix K;
+    const ThreadsOfArgument threads(state);
+    Bed                     bed = compacted_bed();
+    ContactAssembler        assembler;
+    Eigen::VectorXd         F;
+    BlockSparseMatrix       K;
     assembler.assemble(bed, material1_model(), F, K);
     for (auto _ : state)
       {
@@ -80,7 +97,6 @@ namespace
         benchmark::DoNotOptimize(K.block(0));
       }
     state.counters["pairs"] = static_cast<double>(bed.contacts.pairs.size());
-    omp_set_num_threads(threads_before);
   }
 } // namespace
 
