@@ -82,7 +82,8 @@ namespace compax::dem
                  Eigen::VectorXd &,
                  BlockSparseMatrix *,
                  ContactSums &,
-                 LoadedContacts &)
+                 LoadedContacts &,
+                 std::vector<WallTerm> &)
   {
   }
 
@@ -231,6 +232,8 @@ namespace compax::dem
     std::vector<std::uint32_t> incidence;
     std::uint64_t              incidence_revision = ~std::uint64_t(0);
     std::size_t                incidence_pairs    = 0;
+    /// The wall contacts' terms of the last evaluation (a die's bed).
+    std::vector<WallTerm> wall_terms;
   };
 
   template <typename BedType>
@@ -303,7 +306,7 @@ namespace compax::dem
             add_pairs_in_order<true>(bed, response, F, K, loaded);
           }
       }
-    add_wall_terms<with_stiffness>(bed, F, K, sums, loaded);
+    add_wall_terms<with_stiffness>(bed, F, K, sums, loaded, wall_terms);
     loaded.report(sums);
     return sums;
   }

@@ -7,6 +7,7 @@
 #include "dem/solver/history_update.h"
 #include "dem/solver/pair_block.h"
 #include "dem/solver/pair_pattern.h"
+#include "dem/walls/die_walls.h"
 
 #include <Eigen/Core>
 
@@ -24,6 +25,15 @@ namespace compax::dem
    * otherwise set the scale of the convergence test of an unloaded bed.
    */
   inline constexpr double touch_tolerance = 0.0;
+
+  /// A wall contact's gap and the law's response there (all zero where
+  /// the contact adds nothing), computed on any thread before one thread
+  /// adds them in list order (add_wall_terms()).
+  struct WallTerm
+  {
+    WallGap         gap;
+    ContactResponse response;
+  };
 
   /// The count of the contacts carrying a force and the sum of their |P|,
   /// from which ContactSums takes n_loaded and mean_force.

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <random>
 
+#include <omp.h>
+
 using namespace compax::dem;
 
 namespace
@@ -35,6 +37,27 @@ TEST(NeighborsCellGrid, EqualsBruteForceOnRandomBed)
       EXPECT_GT(reference.size(), 100u);
       EXPECT_EQ(pairs, reference) << "margin " << margin;
     }
+}
+
+/// Above CellGrid::parallel_particles the threads search ranges of
+/// particles; the list is brute force's, sorted, on 1, 2 and 3 threads.
+TEST(NeighborsCellGrid, ThreadedSearchEqualsBruteForceOnAnyNumberOfThreads)
+{
+  ParticleSystem p;
+  random_bed(p, CellGrid::parallel_particles + 500, 5);
+  const double margin         = 20e-6;
+  const auto   reference      = brute_force_pairs(p.positions, p.radii, margin);
+  const int    threads_before = omp_get_max_threads();
+  CellGrid     grid;
+  std::vector<ParticlePair> pairs;
+  for (const int threads : {1, 2, 3})
+    {
+      omp_set_num_threads(threads);
+      grid.find_pairs(p.positions, p.radii, margin, pairs);
+      EXPECT_EQ(pairs, reference) << threads << " threads";
+    }
+  omp_set_num_threads(threads_before);
+  EXPECT_GT(reference.size(), p.size());
 }
 
 TEST(NeighborsContactSet, HistorySurvivesRebuildsAndSeparation)

@@ -252,40 +252,60 @@ TEST(SolverEquilibrium, LbfgsRelaxesAColumnToTheClosedForm)
   expect_column_closed_form(bed, model, N, total, tolerance);
 }
 
-/// L-BFGS takes the same path on any number of threads: on a bed large
-/// enough for the threaded two-loop recursion (2744 jittered spheres of a
-/// pressed simple cubic lattice, which comes apart to a force-free state
-/// after 66 evaluations), the first 60 evaluations end at the same
-/// positions to the bit on one, two and three threads, and lower the
-/// largest net force.
+namespace
+{
+  /// Relaxes a bed large enough for the threaded residual, vector updates
+  /// and Verlet search (2744 jittered spheres of a pressed simple cubic
+  /// lattice, which comes apart to a force-free state) by @p evaluations
+  /// residual evaluations of a fresh Minimiser on one, two and three
+  /// threads, and expects the same positions to the bit and a lower
+  /// largest net force.
+  template <typename Minimiser>
+  void
+  expect_the_same_path_on_any_number_of_threads(const int evaluations)
+  {
+    const ContactModel model = compax::testing::material1::contact_model();
+    const int          threads_before = omp_get_max_threads();
+    const auto         largest_force  = [&](Bed &bed) {
+      ContactAssembler assembler;
+      Eigen::VectorXd  F;
+      assembler.residual(bed, model, F);
+      return max_particle_norm(F);
+    };
+    std::vector<Bed> relaxed;
+    for (const int threads : {1, 2, 3})
+      {
+        omp_set_num_threads(threads);
+        Bed              bed = compax::testing::pressed_lattice(model, R, 14);
+        const double     before = largest_force(bed);
+        Minimiser        minimiser;
+        const FireResult r = minimiser.relax(bed, model, 1e-9, evaluations);
+        EXPECT_EQ(r.iterations, evaluations) << threads << " threads";
+        EXPECT_LT(largest_force(bed), 0.5 * before) << threads << " threads";
+        relaxed.push_back(std::move(bed));
+      }
+    omp_set_num_threads(threads_before);
+    for (std::size_t t = 1; t < relaxed.size(); ++t)
+      for (std::size_t i = 0; i < relaxed[0].particles.size(); ++i)
+        ASSERT_EQ(relaxed[t].particles.positions[i],
+                  relaxed[0].particles.positions[i])
+          << t + 1 << " threads, sphere " << i;
+  }
+} // namespace
+
+/// L-BFGS takes the same path on any number of threads (the threaded
+/// two-loop recursion sums its blocks in block order): the first 60
+/// evaluations, short of the force-free state (66).
 TEST(SolverEquilibrium, LbfgsTakesTheSamePathOnAnyNumberOfThreads)
 {
-  const ContactModel model = compax::testing::material1::contact_model();
-  const int          threads_before = omp_get_max_threads();
-  const auto         largest_force  = [&](Bed &bed) {
-    ContactAssembler assembler;
-    Eigen::VectorXd  F;
-    assembler.residual(bed, model, F);
-    return max_particle_norm(F);
-  };
-  std::vector<Bed> relaxed;
-  for (const int threads : {1, 2, 3})
-    {
-      omp_set_num_threads(threads);
-      Bed              bed    = compax::testing::pressed_lattice(model, R, 14);
-      const double     before = largest_force(bed);
-      LbfgsRelaxation  lbfgs;
-      const FireResult r = lbfgs.relax(bed, model, 1e-9, 60);
-      EXPECT_EQ(r.iterations, 60) << threads << " threads";
-      EXPECT_LT(largest_force(bed), 0.5 * before) << threads << " threads";
-      relaxed.push_back(std::move(bed));
-    }
-  omp_set_num_threads(threads_before);
-  for (std::size_t t = 1; t < relaxed.size(); ++t)
-    for (std::size_t i = 0; i < relaxed[0].particles.size(); ++i)
-      ASSERT_EQ(relaxed[t].particles.positions[i],
-                relaxed[0].particles.positions[i])
-        << t + 1 << " threads, sphere " << i;
+  expect_the_same_path_on_any_number_of_threads<LbfgsRelaxation>(60);
+}
+
+/// FIRE takes the same path on any number of threads (the residual and
+/// the Verlet search threaded, its vector algebra on one).
+TEST(SolverEquilibrium, FireTakesTheSamePathOnAnyNumberOfThreads)
+{
+  expect_the_same_path_on_any_number_of_threads<FireRelaxation>(100);
 }
 
 /// The progress reports of a relaxation (reported at every evaluation with
