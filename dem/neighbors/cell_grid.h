@@ -56,7 +56,7 @@ namespace compax::dem
                  double                              margin,
                  std::vector<ParticlePair>          &pairs) const;
 
-    Eigen::Vector3d lo;
+    Eigen::Vector3d lo      = Eigen::Vector3d::Zero();
     double          cell    = 0.0;
     int             dims[3] = {1, 1, 1};
     /// Each thread's pairs of the last parallel search.
