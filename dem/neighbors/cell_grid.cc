@@ -1,5 +1,7 @@
 #include "dem/neighbors/cell_grid.h"
 
+#include "dem/parallel_particles.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -62,7 +64,7 @@ namespace compax::dem
           = static_cast<std::uint32_t>(i);
     }
 
-    if (n < parallel_particles)
+    if (static_cast<std::ptrdiff_t>(n) < parallel_particles)
       {
         for (std::size_t i = 0; i < n; ++i)
           add_pairs_of(

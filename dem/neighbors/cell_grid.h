@@ -34,11 +34,6 @@ namespace compax::dem
                double                              margin,
                std::vector<ParticlePair>          &pairs);
 
-    /// Particles from which find_pairs() searches on every thread: the
-    /// solvers' threshold, below which a parallel region costs more than
-    /// it shares.
-    static constexpr std::size_t parallel_particles = 2048;
-
   private:
     /// The cell of a point, clamped to the grid, as (x, y, z) indices and
     /// as the flat index (z dims[1] + y) dims[0] + x.

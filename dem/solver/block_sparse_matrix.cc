@@ -78,7 +78,7 @@ namespace compax::dem
     double       *y = dst.data();
     // Rows are independent and each sums its blocks in column order, so
     // the product is the same on any number of threads.
-#pragma omp parallel for schedule(static) if (n >= parallel_block_rows)
+#pragma omp parallel for schedule(static) if (n >= parallel_particles)
     for (std::ptrdiff_t i = 0; i < n; ++i)
       {
         double y0 = 0.0, y1 = 0.0, y2 = 0.0;

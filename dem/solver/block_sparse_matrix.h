@@ -1,6 +1,7 @@
 #pragma once
 
 #include "dem/neighbors/cell_grid.h"
+#include "dem/parallel_particles.h"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -76,10 +77,6 @@ namespace compax::dem
                 values.begin() + 9 * std::size_t{row_start[i + 1]},
                 0.0);
     }
-
-    /// Block rows from which vmult() shares the rows among the threads
-    /// (below, a parallel region costs more than it shares).
-    static constexpr std::ptrdiff_t parallel_block_rows = 2048;
 
     /// dst = A src; the same to the bit on any number of threads.
     void

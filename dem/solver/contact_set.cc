@@ -1,19 +1,12 @@
 #include "dem/solver/contact_set.h"
 
+#include "dem/parallel_particles.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace compax::dem
 {
-  namespace
-  {
-    /// Particles from which moved_too_far() shares its loop among the
-    /// threads: the stiffness product's threshold
-    /// (BlockSparseMatrix::parallel_block_rows), below which a parallel
-    /// region costs more than it shares.
-    constexpr std::ptrdiff_t parallel_particles = 2048;
-  } // namespace
-
   bool
   ContactSet::moved_too_far(const ParticleSystem &particles,
                             const DieWalls       &die) const

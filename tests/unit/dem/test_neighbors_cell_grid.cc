@@ -1,4 +1,5 @@
 #include "dem/neighbors/cell_grid.h"
+#include "dem/parallel_particles.h"
 #include "dem/solver/contact_set.h"
 #include "tests/support/gonzalez_material1.h"
 
@@ -39,12 +40,12 @@ TEST(NeighborsCellGrid, EqualsBruteForceOnRandomBed)
     }
 }
 
-/// Above CellGrid::parallel_particles the threads search ranges of
+/// Above parallel_particles the threads search ranges of
 /// particles; the list is brute force's, sorted, on 1, 2 and 3 threads.
 TEST(NeighborsCellGrid, ThreadedSearchEqualsBruteForceOnAnyNumberOfThreads)
 {
   ParticleSystem p;
-  random_bed(p, CellGrid::parallel_particles + 500, 5);
+  random_bed(p, static_cast<std::size_t>(parallel_particles) + 500, 5);
   const double margin         = 20e-6;
   const auto   reference      = brute_force_pairs(p.positions, p.radii, margin);
   const int    threads_before = omp_get_max_threads();

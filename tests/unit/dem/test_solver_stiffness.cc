@@ -1,3 +1,4 @@
+#include "dem/parallel_particles.h"
 #include "dem/solver/contact_assembler.h"
 #include "tests/support/gonzalez_material1.h"
 #include "tests/support/pressed_lattice.h"
@@ -201,7 +202,7 @@ TEST(SolverStiffness, ThreadedStiffnessProductIsTheSerialOneToTheBit)
   const ContactModel model = material1::contact_model();
   Bed bed = compax::testing::pressed_lattice(model, material1::R, 24);
   ASSERT_GE(static_cast<std::ptrdiff_t>(bed.particles.size()),
-            BlockSparseMatrix::parallel_block_rows);
+            parallel_particles);
 
   ContactAssembler  assembler;
   BlockSparseMatrix K;
