@@ -1,5 +1,6 @@
 #include "dem/solver/lbfgs_relaxation.h"
 
+#include "dem/parallel_particles.h"
 #include "dem/solver/residual_norms.h"
 #include "dem/solver/trust_region_newton.h"
 
@@ -19,11 +20,16 @@ namespace compax::dem
     /// Entries of d per block of the two-loop recursion's dot products
     /// (256 particles; a bed of 6512 spheres has 26 blocks).
     constexpr Eigen::Index direction_block = 768;
-    /// Beds with fewer blocks than this (2048 spheres) take the plain
-    /// recursion: threads would cost more than they share there (60
-    /// spheres: 2.3 us serial, 9 us on two threads; 512 spheres about
+    /// Beds with fewer blocks than this (parallel_particles spheres) take
+    /// the plain recursion: threads would cost more than they share there
+    /// (60 spheres: 2.3 us serial, 9 us on two threads; 512 spheres about
     /// even), and their paths stay those of Eigen's dot products.
-    constexpr std::ptrdiff_t parallel_direction_blocks = 8;
+    constexpr std::ptrdiff_t parallel_direction_blocks
+      = 3 * parallel_particles / direction_block;
+    static_assert(parallel_direction_blocks * direction_block
+                    == 3 * parallel_particles,
+                  "the recursion's blocks must cover parallel_particles "
+                  "spheres exactly");
     /// Entries of a vector from which its updates are shared among the
     /// threads: the recursion's threshold.
     constexpr Eigen::Index parallel_entries
